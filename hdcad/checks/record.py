@@ -1,0 +1,82 @@
+"""The one result record every check returns."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field, asdict
+from typing import Any
+
+from ..catalog import Datum
+
+PASS, FAIL, NOT_EVALUATED = "pass", "fail", "not_evaluated"
+
+
+@dataclass
+class Quantity:
+    value: Any
+    unit: str = ""
+    source: str = ""
+
+
+@dataclass
+class CheckResult:
+    """Outcome of one selection or geometric check.
+
+    ``margin`` is the fraction of the limit left over: (limit − value)/limit for an upper
+    limit (``sense`` ``<=``), (value − limit)/limit for a lower limit (``>=``). Negative
+    margins fail.
+    """
+
+    id: str
+    title: str
+    family: str
+    formula: str
+    inputs: dict[str, Quantity]
+    value: float | None
+    limit: float | None
+    unit: str
+    sense: str  # "<=" value must not exceed limit; ">=" value must reach limit
+    status: str
+    source: str
+    note: str = ""
+    margin: float | None = None
+    details: dict[str, Any] = field(default_factory=dict)
+
+    def as_dict(self) -> dict[str, Any]:
+        return asdict(self)
+
+    @property
+    def failed(self) -> bool:
+        return self.status == FAIL
+
+
+def quantity(datum: Datum | float | None, unit: str = "", source: str = "") -> Quantity:
+    """A Quantity from a catalog Datum (keeps its source) or a plain number."""
+    if isinstance(datum, Datum):
+        return Quantity(datum.value, datum.unit or unit, datum.source)
+    return Quantity(datum, unit, source)
+
+
+def margin_of(value: float, limit: float, sense: str) -> float | None:
+    if limit == 0:
+        return None
+    return (limit - value) / limit if sense == "<=" else (value - limit) / limit
+
+
+def compared(id: str, title: str, family: str, formula: str, inputs: dict[str, Quantity],
+             value: float, limit: float, unit: str, sense: str, source: str,
+             note: str = "", details: dict | None = None) -> CheckResult:
+    """A check that compares ``value`` with ``limit``; pass when the sense holds."""
+    ok = value <= limit if sense == "<=" else value >= limit
+    return CheckResult(id, title, family, formula, inputs, value, limit, unit, sense,
+                       PASS if ok else FAIL, source, note, margin_of(value, limit, sense),
+                       details or {})
+
+
+def not_evaluated(id: str, title: str, family: str, formula: str, missing: str,
+                  inputs: dict[str, Quantity] | None = None, value: float | None = None,
+                  unit: str = "", source: str = "", note: str = "",
+                  details: dict | None = None) -> CheckResult:
+    """A check that cannot be decided; ``missing`` names the data that is missing."""
+    text = f"not evaluated: {missing}" + (f". {note}" if note else "")
+    return CheckResult(id, title, family, formula, inputs or {}, value, None, unit, "",
+                       NOT_EVALUATED, source, text, None, details or {})

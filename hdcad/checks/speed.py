@@ -1,0 +1,50 @@
+"""Speed checks: ratio against the motor speed, average and maximum input speed.
+
+References
+----------
+Seed 000 p.014-015: ni_max/no_max ≥ R, ni_av = no_av·R, ni_max = no_max·R.
+"""
+
+from __future__ import annotations
+
+from ..catalog import Datum
+from .record import CheckResult, Quantity, compared, not_evaluated, quantity
+
+FAMILY = "speed"
+SELECTION_SOURCE = "seed 000 p.014 (selection flowchart)"
+
+
+def ratio_limit(motor_max_rpm: float, max_output_rpm: float, ratio: float) -> CheckResult:
+    """The motor can reach the maximum output speed: ni_max,motor / no_max ≥ R [-]."""
+    value = motor_max_rpm / max_output_rpm
+    inputs = {"ni_max (motor)": Quantity(motor_max_rpm, "r/min"),
+              "no_max": Quantity(max_output_rpm, "r/min"), "R": Quantity(ratio, "")}
+    return compared("ratio_limit", "Ratio against motor speed", FAMILY,
+                    "ni_max / no_max ≥ R", inputs, value, float(ratio), "", ">=",
+                    SELECTION_SOURCE)
+
+
+def avg_input_speed(ni_av_rpm: float, limit: Datum | None, missing: str = "") -> CheckResult:
+    """Average input speed ni_av [r/min] against the allowed average input speed."""
+    title, formula = "Average input speed", "ni_av = no_av·R ≤ ni_av,allowed"
+    inputs = {"ni_av": Quantity(ni_av_rpm, "r/min")}
+    if limit is None:
+        return not_evaluated("avg_input_speed", title, FAMILY, formula,
+                             missing or "allowed average input speed missing from the catalog",
+                             inputs, ni_av_rpm, "r/min")
+    inputs["ni_av,allowed"] = quantity(limit)
+    return compared("avg_input_speed", title, FAMILY, formula, inputs, ni_av_rpm, float(limit),
+                    "r/min", "<=", limit.source)
+
+
+def max_input_speed(ni_max_rpm: float, limit: Datum | None, rule: str = "") -> CheckResult:
+    """Maximum input speed ni_max = no_max·R [r/min] against the allowed maximum."""
+    title, formula = "Maximum input speed", "ni_max = no_max·R ≤ ni_max,allowed"
+    inputs = {"ni_max": Quantity(ni_max_rpm, "r/min")}
+    if limit is None:
+        return not_evaluated("max_input_speed", title, FAMILY, formula,
+                             "allowed maximum input speed missing from the catalog", inputs,
+                             ni_max_rpm, "r/min")
+    inputs["ni_max,allowed"] = quantity(limit)
+    return compared("max_input_speed", title, FAMILY, formula, inputs, ni_max_rpm, float(limit),
+                    "r/min", "<=", limit.source, rule)

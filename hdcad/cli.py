@@ -1,0 +1,166 @@
+"""The ``hdcad`` command line.
+
+Exit codes: 0 every check passes (checks that cannot be evaluated are listed, not failed),
+1 a check fails, 2 bad input (one-line message naming the field and the allowed range).
+Commands that need no geometry never import cadquery.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from typing import Sequence
+
+from . import __version__
+from .errors import InputError
+
+EXIT_OK, EXIT_FAIL, EXIT_INPUT = 0, 1, 2
+
+
+def fmt(value, digits: int = 4) -> str:
+    """A number for a table: thousands separators above 1000, else 4 significant digits."""
+    if value is None:
+        return "—"
+    if isinstance(value, str):
+        return value
+    if value != value or value in (float("inf"), float("-inf")):
+        return str(value)
+    if abs(value) >= 1000:
+        return f"{value:,.0f}"
+    return f"{value:.{digits}g}"
+
+
+def _table(headers: Sequence[str], rows: Sequence[Sequence[str]]) -> str:
+    widths = [max(len(str(x)) for x in col) for col in zip(headers, *rows)]
+    line = lambda cells: "  ".join(str(c).ljust(w) for c, w in zip(cells, widths)).rstrip()
+    return "\n".join([line(headers), line(["-" * w for w in widths])] + [line(r) for r in rows])
+
+
+def cmd_catalog(args) -> int:
+    from .catalog import load_catalog
+    from .models import list_models, resolve
+    catalog = load_catalog(args.catalog_overlay)
+    rows = []
+    for code in list_models(catalog, args.series):
+        m = resolve(code, catalog)
+        if m.is_fd:
+            rated = dict((s, d) for s, d in m.fd_torque_by_speed)
+            r = rated.get(1450.0)
+            rows.append([code, "rated@1450", fmt(float(r) if r else None), "—", "—",
+                         fmt(_f(m.get("max_input_speed_oil_rpm")))])
+        else:
+            rows.append([code, fmt(_f(m.get("rated_torque_Nm"))),
+                         fmt(_f(m.get("avg_torque_max_Nm"))), fmt(_f(m.get("peak_torque_Nm"))),
+                         fmt(_f(m.get("momentary_torque_Nm"))),
+                         fmt(_f(m.get("max_input_speed_rpm")))])
+    print(f"hdcad catalog (revision {catalog.revision}); torques in N·m, speeds in r/min")
+    print(_table(["model", "rated", "avg max", "peak", "momentary", "max input speed"], rows))
+    return EXIT_OK
+
+
+def _f(datum):
+    return None if datum is None else float(datum)
+
+
+def print_evaluation(ev) -> None:
+    print(f"{ev.model.code}: {ev.model.description}")
+    d = ev.derived
+    print(f"duty {ev.duty.name}: Tav {fmt(d['avg_torque_Nm'])} N·m, no_av "
+          f"{fmt(d['avg_output_speed_rpm'])} r/min, ni_av {fmt(d['avg_input_speed_rpm'])} r/min, "
+          f"ni_max {fmt(d['max_input_speed_rpm'])} r/min")
+    rows = [[c.id, c.status.upper().replace("_", " "), fmt(c.value), c.sense or "",
+             fmt(c.limit), c.unit, "—" if c.margin is None else f"{c.margin:+.0%}"]
+            for c in ev.checks]
+    print(_table(["check", "status", "value", "", "limit", "unit", "margin"], rows))
+    for c in ev.checks:
+        if c.note:
+            print(f"  {c.id}: {c.note}")
+    print(f"verdict: {ev.verdict} (catalog revision {ev.catalog_revision})")
+
+
+def cmd_check(args) -> int:
+    from .catalog import load_catalog
+    from .checks.run import run_checks
+    from .duty import load_duty
+    from .models import resolve
+    from .output import json_text, write_text_atomic
+    catalog = load_catalog(args.catalog_overlay)
+    model = resolve(args.model, catalog)
+    duty = load_duty(args.duty)
+    ev = run_checks(model, duty, catalog)
+    print_evaluation(ev)
+    if args.json:
+        write_text_atomic(args.json, json_text(ev.as_dict()))
+    return EXIT_OK if ev.all_passed else EXIT_FAIL
+
+
+def cmd_select(args) -> int:
+    from .catalog import load_catalog
+    from .duty import load_duty
+    from .output import json_text, write_text_atomic
+    from .selection import select
+    catalog = load_catalog(args.catalog_overlay)
+    duty = load_duty(args.duty)
+    candidates = select(duty, catalog, args.series)
+    passing = [c for c in candidates if c.passes]
+    rows = []
+    for c in candidates:
+        f, ev = c.first_failure, c.evaluation
+        remark = (f"{f.id}: {fmt(f.value)} {f.sense} {fmt(f.limit)} {f.unit}".rstrip() if f else
+                  f"missing core rating: {', '.join(c.missing_core)}" if c.missing_core else
+                  f"{len(ev.not_evaluated)} not evaluated")
+        rows.append([c.model, c.status.upper() if c.passes else c.status, remark])
+    print(_table(["model", "result", "first failing check / remarks"], rows))
+    print(f"{len(passing)} of {len(candidates)} models pass"
+          + (f"; smallest: {passing[0].model}" if passing else ""))
+    if args.json:
+        write_text_atomic(args.json, json_text({
+            "duty": duty.as_dict(),
+            "passing": [{"model": c.model, "verdict": c.evaluation.verdict,
+                         "not_evaluated": [x.id for x in c.evaluation.not_evaluated]}
+                        for c in passing],
+            "rejected": [{"model": c.model, "check": c.first_failure.as_dict()}
+                         for c in candidates if c.status == "fail"],
+            "incomplete": [{"model": c.model, "missing": c.missing_core}
+                           for c in candidates if c.status == "incomplete"],
+        }))
+    return EXIT_OK if passing else EXIT_FAIL
+
+
+def _parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(prog="hdcad", description="Design guides for strain wave "
+                                     "gears: selection checks, housings, STEP, calc sheets.")
+    parser.add_argument("--version", action="version", version=f"hdcad {__version__}")
+    sub = parser.add_subparsers(dest="command", required=True)
+
+    def command(name: str, func, help_: str) -> argparse.ArgumentParser:
+        p = sub.add_parser(name, help=help_, description=help_)
+        p.add_argument("--catalog-overlay", metavar="FILE",
+                       help="YAML file adding catalog rows or tables the seeds lack")
+        p.set_defaults(func=func)
+        return p
+
+    p = command("catalog", cmd_catalog, "List catalog models with their key ratings.")
+    p.add_argument("--series", choices=["FD", "CSF-GH", "CSG-GH", "CSF", "CSG"])
+    p = command("check", cmd_check, "Run every selection check for one model and duty.")
+    p.add_argument("model", help="model code, e.g. FD-25-80-2, CSF-45-120-GH, CSF-40-120-2A-GR")
+    p.add_argument("--duty", required=True, metavar="FILE", help="duty YAML file")
+    p.add_argument("--json", metavar="FILE", help="also write the results as JSON")
+    p = command("select", cmd_select, "Every catalog model that passes the duty, smallest first.")
+    p.add_argument("--duty", required=True, metavar="FILE", help="duty YAML file")
+    p.add_argument("--series", choices=["FD", "CSF-GH", "CSG-GH", "CSF", "CSG"])
+    p.add_argument("--json", metavar="FILE", help="also write the results as JSON")
+    return parser
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    args = _parser().parse_args(argv)
+    try:
+        return args.func(args)
+    except InputError as exc:
+        print(f"hdcad: error: {exc}", file=sys.stderr)
+        return EXIT_INPUT
+
+
+if __name__ == "__main__":
+    sys.exit(main())
