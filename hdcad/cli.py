@@ -38,16 +38,17 @@ def _table(headers: Sequence[str], rows: Sequence[Sequence[str]]) -> str:
 
 def cmd_catalog(args) -> int:
     from .catalog import load_catalog
+    from .checks.fd import momentary_allowance
     from .models import list_models, resolve
     catalog = load_catalog(args.catalog_overlay)
     rows = []
     for code in list_models(catalog, args.series):
         m = resolve(code, catalog)
-        if m.is_fd:
-            rated = dict((s, d) for s, d in m.fd_torque_by_speed)
-            r = rated.get(1450.0)
-            rows.append([code, "rated@1450", fmt(float(r) if r else None), "—", "—",
-                         fmt(_f(m.get("max_input_speed_oil_rpm")))])
+        if m.is_fd:  # FD ratings depend on speed: show the 1450 r/min row (table 310-1)
+            rated = dict(m.fd_torque_by_speed).get(1450.0)
+            rows.append([code, fmt(_f(rated)) + " @1450", "—", "—",
+                         fmt(_f(momentary_allowance(m.fd_torque_by_speed))),
+                         fmt(_f(m.get("max_input_speed_oil_rpm"))) + " (oil)"])
         else:
             rows.append([code, fmt(_f(m.get("rated_torque_Nm"))),
                          fmt(_f(m.get("avg_torque_max_Nm"))), fmt(_f(m.get("peak_torque_Nm"))),

@@ -1,0 +1,1 @@
+"""Parametric parts built with CadQuery. The only package that imports cadquery."""
