@@ -128,6 +128,22 @@ def cmd_select(args) -> int:
     return EXIT_OK if passing else EXIT_FAIL
 
 
+def cmd_design(args) -> int:
+    from .catalog import load_catalog
+    from .design import run_design
+    from .design_options import load_options
+    from .duty import load_duty
+    from .models import resolve
+    catalog = load_catalog(args.catalog_overlay)
+    model = resolve(args.model, catalog)
+    duty = load_duty(args.duty)
+    options = load_options(args.design)
+    result = run_design(model, duty, options, catalog, args.out)
+    print_evaluation(result.evaluation)
+    print(f"wrote {result.folder}/: {', '.join(result.files)}")
+    return EXIT_OK if result.evaluation.all_passed else EXIT_FAIL
+
+
 def _parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(prog="hdcad", description="Design guides for strain wave "
                                      "gears: selection checks, housings, STEP, calc sheets.")
@@ -151,6 +167,12 @@ def _parser() -> argparse.ArgumentParser:
     p.add_argument("--duty", required=True, metavar="FILE", help="duty YAML file")
     p.add_argument("--series", choices=["FD", "CSF-GH", "CSG-GH", "CSF", "CSG"])
     p.add_argument("--json", metavar="FILE", help="also write the results as JSON")
+    p = command("design", cmd_design, "Checks, housing/flange parts, STEP/STL/SVG and "
+                                      "results.json for one model.")
+    p.add_argument("model", help="model code, e.g. FD-25-80-2, FD-25-80-0, CSF-45-120-GH")
+    p.add_argument("--duty", required=True, metavar="FILE", help="duty YAML file")
+    p.add_argument("--design", metavar="FILE", help="design options YAML (defaults documented)")
+    p.add_argument("--out", required=True, metavar="DIR", help="output folder; writes DIR/MODEL/")
     return parser
 
 

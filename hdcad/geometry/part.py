@@ -19,6 +19,8 @@ class BoltCircle:
     thread: str              # e.g. "M5"
     kind: str                # "clearance" | "tapped"
     depth_mm: float | None = None  # tapped depth (thread engagement available)
+    annulus_inner_mm: float | None = None  # material ring the holes sit in (diameters)
+    annulus_outer_mm: float | None = None
 
 
 @dataclass
@@ -51,6 +53,14 @@ def export_step(part: Part, path: Path) -> None:
 def export_stl(part: Part, path: Path, tolerance_mm: float = 0.05) -> None:
     cq.exporters.export(part.shape, str(path), exportType="STL", tolerance=tolerance_mm,
                         angularTolerance=0.2)
+
+
+def export_svg(part: Part, path: Path) -> None:
+    """An isometric hidden-line view of the part (for the calculation sheet)."""
+    cq.exporters.export(part.shape, str(path), exportType="SVG",
+                        opt={"width": 480, "height": 360, "marginLeft": 20, "marginTop": 20,
+                             "showAxes": False, "projectionDir": (1.0, -1.2, 0.8),
+                             "strokeWidth": 0.4, "showHidden": False})
 
 
 def export_assembly(parts: list[Part], path: Path) -> cq.Assembly:

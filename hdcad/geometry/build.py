@@ -1,0 +1,85 @@
+"""Which parts a model gets, where they sit in the assembly, and what they weigh.
+
+FD-…-2: the two casing halves of the FD-0 unit (seed 001 p.315: casings and bearings of an
+FD-2 follow the FD-0 unit), placed back to back with the running gap between them.
+FD-…-0: a drive flange on each turning casing half, for the user's gears or pulleys.
+CSF/CSG-…-GH: the motor adapter flange for the chosen flange code.
+"""
+
+from __future__ import annotations
+
+import itertools
+
+from ..catalog import Catalog
+from ..design_options import DesignOptions
+from ..errors import InputError
+from ..models import GearModel
+from .part import Part
+
+MISSING_COMPONENT_TABLES = (
+    "component_outline", "component_housing")
+
+
+def build_parts(model: GearModel, catalog: Catalog, options: DesignOptions) -> list[Part]:
+    """The parts of ``model``, placed for the assembly. InputError for impossible requests."""
+    try:
+        if model.family == "FD-2":
+            return _fd_casing(model, catalog, options)
+        if model.family == "FD-0":
+            return _fd_flanges(model, catalog, options)
+        if model.family == "GH":
+            return [_gh_flange(model, catalog, options)]
+    except ValueError as exc:
+        raise InputError("design", str(exc).splitlines()[0]) from None
+    missing = [t for t in MISSING_COMPONENT_TABLES if not catalog.has(t)]
+    raise InputError("model", f"{model.code}: the housing needs the tables {', '.join(missing)} "
+                              "(outline and recommended housing dimensions), which the seeds do "
+                              "not contain; supply them with --catalog-overlay")
+
+
+def _fd_casing(model, catalog, options) -> list[Part]:
+    from .fd_casing import FDCasingHalf
+    gap = options.running_gap_mm
+    s_half = FDCasingHalf(model.size, catalog, options, side="S").build()
+    d_half = FDCasingHalf(model.size, catalog, options, side="D").build()
+    s_half.flip, s_half.offset_z_mm = True, -gap / 2
+    d_half.offset_z_mm = gap / 2
+    return [s_half, d_half]
+
+
+def _fd_flanges(model, catalog, options) -> list[Part]:
+    from .flanges import FDDriveFlange
+    width = catalog.find("fd0_dimensions", size=model.size)["D_mm"]  # unit width (311-1)
+    parts = []
+    for side, flip, z in (("S", True, -width / 2), ("D", False, width / 2)):
+        part = FDDriveFlange(model.size, catalog, options).build()
+        part.name, part.flip, part.offset_z_mm = f"drive_flange_{side}", flip, z
+        parts.append(part)
+    return parts
+
+
+def _gh_flange(model, catalog, options) -> Part:
+    from .flanges import GHMotorFlange
+    codes = GHMotorFlange.codes(catalog, model.series, model.size)
+    if not codes:
+        raise ValueError(f"{model.series}-{model.size} has no motor-flange table in the catalog")
+    code = options.motor_flange or codes[0]
+    if code not in codes:
+        raise ValueError(f"motor_flange {code!r} is not available for {model.series}-"
+                         f"{model.size}; complete codes: {', '.join(codes)}")
+    return GHMotorFlange(model.series, model.size, code, catalog, options).build()
+
+
+def part_mass_kg(part: Part, density_kg_m3: float) -> float:
+    """Mass [kg] from the solid's volume [mm³]."""
+    return part.solid().Volume() * 1e-9 * density_kg_m3
+
+
+def interference_mm3(parts: list[Part]) -> list[tuple[str, str, float]]:
+    """Intersection volume [mm³] of every pair of placed parts."""
+    placed = [(p.name, p.placed()) for p in parts]
+    out = []
+    for (name_a, a), (name_b, b) in itertools.combinations(placed, 2):
+        common = a.intersect(b)
+        out.append((name_a, name_b, common.Volume() if common.Solids() else 0.0))
+    return out
