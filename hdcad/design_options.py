@@ -27,7 +27,7 @@ AXES = ("horizontal", "vertical")
 class DesignOptions:
     motor_flange: str | None = None      # GH flange code (e.g. KG); None = first in the table
     input_shaft_mm: float | None = None  # motor / input shaft diameter; None = standard bore
-    material: str = "aluminium"
+    material: str = "steel"              # structural steel: the FD casings carry gears
     wall_mm: float = 8.0                 # housing wall and flange plate thickness
     bolt_class: str = "12.9"
     axis: str = "horizontal"

@@ -68,5 +68,5 @@ def export_assembly(parts: list[Part], path: Path) -> cq.Assembly:
     for part in parts:
         assembly.add(cq.Workplane().add(part.placed()), name=part.name,
                      color=cq.Color(*part.color))
-    assembly.save(str(path), exportType="STEP")
+    assembly.export(str(path), exportType="STEP")
     return assembly
