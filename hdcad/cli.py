@@ -63,19 +63,26 @@ def _f(datum):
     return None if datum is None else float(datum)
 
 
+def _label(check) -> str:
+    """Check id, with the bolt circle's name where one id has several records."""
+    name = check.details.get("name")
+    return f"{check.id}[{name}]" if name else check.id
+
+
 def print_evaluation(ev) -> None:
     print(f"{ev.model.code}: {ev.model.description}")
     d = ev.derived
     print(f"duty {ev.duty.name}: Tav {fmt(d['avg_torque_Nm'])} N·m, no_av "
           f"{fmt(d['avg_output_speed_rpm'])} r/min, ni_av {fmt(d['avg_input_speed_rpm'])} r/min, "
           f"ni_max {fmt(d['max_input_speed_rpm'])} r/min")
-    rows = [[c.id, c.status.upper().replace("_", " "), fmt(c.value), c.sense or "",
+    rows = [[_label(c),
+             c.status.upper().replace("_", " "), fmt(c.value), c.sense or "",
              fmt(c.limit), c.unit, "—" if c.margin is None else f"{c.margin:+.0%}"]
             for c in ev.checks]
     print(_table(["check", "status", "value", "", "limit", "unit", "margin"], rows))
     for c in ev.checks:
         if c.note:
-            print(f"  {c.id}: {c.note}")
+            print(f"  {_label(c)}: {c.note}")
     print(f"verdict: {ev.verdict} (catalog revision {ev.catalog_revision})")
 
 

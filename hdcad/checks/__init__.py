@@ -4,7 +4,9 @@ Every check returns a :class:`hdcad.checks.record.CheckResult`. :func:`run_check
 whole set for one model and duty.
 """
 
-from .record import CheckResult, FAIL, NOT_EVALUATED, PASS  # noqa: F401
+from .record import CheckResult, FAIL, NOT_EVALUATED, PASS
+
+__all__ = ["CheckResult", "FAIL", "NOT_EVALUATED", "PASS", "CHECK_IDS"]
 
 CHECK_IDS = (
     "ratio_limit", "avg_torque", "avg_input_speed", "max_input_speed", "peak_torque",

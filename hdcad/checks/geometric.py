@@ -49,7 +49,7 @@ def _fixed_bore(model: GearModel, catalog: Catalog, shaft: float | None, bore: f
         tau, p = key_stresses(torque, d, key["b_mm"], key["h_mm"], key["t1_mm"], length)
         details = {"key_b_mm": key["b_mm"], "key_h_mm": key["h_mm"], "key_length_mm": length,
                    "tau_MPa": tau, "p_MPa": p, "T_Nm": torque}
-    note = (f"the catalog fixes this bore; other bores are not in the seeds"
+    note = ("the catalog fixes this bore; other bores are not in the seeds"
             + (f"; key {key['b_mm']:g}×{key['h_mm']:g} ({KEY_SOURCE}): τ {details['tau_MPa']:.1f} MPa, "
                f"p {details['p_MPa']:.1f} MPa at T {torque:.2f} N·m" if key else ""))
     result = compared("input_bore", title, "geometry", formula, inputs, d, bore, "mm", "<=",

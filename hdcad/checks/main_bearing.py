@@ -18,7 +18,7 @@ from typing import Sequence
 
 from ..duty import ExternalLoad, Segment
 from .load_pattern import average_output_speed
-from .record import CheckResult, Quantity, compared, not_evaluated, FAIL, PASS
+from .record import CheckResult, Quantity, compared, not_evaluated, FAIL
 
 FORMULA = ("Mmax = Frmax(Lr+R) + Famax·La ≤ Mc;  Pc = X(Frav + 2(Frav(Lr+R)+Faav·La)/dp) + "
            "Y·Faav;  L10 = 10⁶/(60·Nav)·(C/(fw·Pc))^(10/3);  fs = Co/Po ≥ fs,min")

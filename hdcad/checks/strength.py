@@ -32,5 +32,5 @@ def shock_count(shock: Shock | None, ratio: float) -> CheckResult:
     inputs["shocks expected"] = Quantity(shock.count, "")
     return compared("shock_count", title, "strength", FORMULA, inputs, allowed,
                     float(shock.count), "", ">=", SOURCE,
-                    f"value is Ns, the allowed number of shocks; limit is the expected count",
+                    "value is Ns, the allowed number of shocks; limit is the expected count",
                     {"Ns": allowed})

@@ -33,6 +33,7 @@ import cadquery as cq
 from ..catalog import Catalog
 from ..design_options import DesignOptions
 from .part import BoltCircle, Part
+from .standards import DIN_974_1_CBORE_MM, ISO_273_MEDIUM_MM, ISO_4762_HEAD_MM, TAP_DRILL_MM
 
 # ---------------------------------------------------------------------------------------------
 # Standard data, nominal values in mm (only the rows the FD sizes 20-100 need).
@@ -48,23 +49,6 @@ ISO_6194_SEAL_MM = {20.0: (35.0, 7.0), 30.0: (42.0, 7.0), 40.0: (55.0, 8.0),
                     90.0: (120.0, 12.0), 110.0: (130.0, 12.0)}
 """ISO 6194-1 / DIN 3760 rotary shaft lip seals: shaft d1 → (housing bore d2, width b).
 One listed size per shaft; for d1 = 40 DIN 3760:1996 gives b = 8 (ISO 6194-1:1982 had 7)."""
-
-ISO_273_MEDIUM_MM = {"M3": 3.4, "M4": 4.5, "M5": 5.5, "M6": 6.6, "M8": 9.0, "M10": 11.0,
-                     "M12": 13.5, "M14": 15.5}
-"""ISO 273 clearance holes for bolts and screws, series "medium"."""
-
-TAP_DRILL_MM = {"M3": 2.5, "M4": 3.3, "M5": 4.2, "M6": 5.0, "M8": 6.8, "M10": 8.5,
-                "M12": 10.2, "M14": 12.0}
-"""Tap drill for ISO 261 coarse threads, class 6H (ISO 2306 / DIN 336: about d − P)."""
-
-ISO_4762_HEAD_MM = {"M3": (5.5, 3.0), "M4": (7.0, 4.0), "M5": (8.5, 5.0), "M6": (10.0, 6.0),
-                    "M8": (13.0, 8.0), "M10": (16.0, 10.0), "M12": (18.0, 12.0),
-                    "M14": (21.0, 14.0)}
-"""ISO 4762 hexagon socket head cap screws: (head diameter dk max, head height k max)."""
-
-DIN_974_CBORE_MM = {"M3": 6.5, "M4": 8.0, "M5": 10.0, "M6": 11.0, "M8": 15.0, "M10": 18.0,
-                    "M12": 20.0, "M14": 24.0}
-"""DIN 974-1 counterbore diameter for ISO 4762 heads without washer (ISO 273 medium row)."""
 
 OIL_PLUG_THREAD = "M10×1"
 OIL_PLUG_TAP_DRILL_MM = 9.0
@@ -187,7 +171,7 @@ class FDCasingHalf:
                                                  f"{label}: seal for shaft")
         self.screw, self.gear_thread = self.fd2["K_thread"], self.fd0["M_thread"]
         self.clearance = _table_value(ISO_273_MEDIUM_MM, self.screw, f"{label}: screw")
-        self.cbore = DIN_974_CBORE_MM[self.screw]
+        self.cbore = DIN_974_1_CBORE_MM[self.screw]
         self.cbore_depth = ISO_4762_HEAD_MM[self.screw][1] + CBORE_SINK_MM
         self.tap_drill = _table_value(TAP_DRILL_MM, self.gear_thread, f"{label}: thread")
         self.shaft_hole = self.bore_d + 2 * SHAFT_CLEARANCE_MM

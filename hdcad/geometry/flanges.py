@@ -19,31 +19,8 @@ import cadquery as cq
 from ..catalog import Catalog
 from ..design_options import DesignOptions
 from .part import BoltCircle, Part
-
-# ---------------------------------------------------------------------------------------------
-# Standard data (metric ISO screw threads and socket head cap screws), nominal values in mm.
-# ---------------------------------------------------------------------------------------------
-ISO_261_PITCH_MM = {"M3": 0.5, "M4": 0.7, "M5": 0.8, "M6": 1.0, "M8": 1.25, "M10": 1.5,
-                    "M12": 1.75, "M14": 2.0, "M16": 2.0, "M20": 2.5, "M24": 3.0}
-"""ISO 261 (ISO general-purpose metric screw threads): coarse pitch P by nominal size."""
-
-ISO_273_MEDIUM_MM = {"M3": 3.4, "M4": 4.5, "M5": 5.5, "M6": 6.6, "M8": 9.0, "M10": 11.0,
-                     "M12": 13.5, "M14": 15.5, "M16": 17.5, "M20": 22.0, "M24": 26.0}
-"""ISO 273 (clearance holes for bolts and screws), series "medium"."""
-
-TAP_DRILL_MM = {"M3": 2.5, "M4": 3.3, "M5": 4.2, "M6": 5.0, "M8": 6.8, "M10": 8.5,
-                "M12": 10.2, "M14": 12.0, "M16": 14.0, "M20": 17.5, "M24": 21.0}
-"""Tap-drill diameter for ISO 261 coarse threads, class 6H: about d − P (ISO 2306, DIN 336)."""
-
-ISO_4762_HEAD_MM = {"M3": (5.5, 3.0), "M4": (7.0, 4.0), "M5": (8.5, 5.0), "M6": (10.0, 6.0),
-                    "M8": (13.0, 8.0), "M10": (16.0, 10.0), "M12": (18.0, 12.0),
-                    "M14": (21.0, 14.0), "M16": (24.0, 16.0), "M20": (30.0, 20.0),
-                    "M24": (36.0, 24.0)}
-"""ISO 4762 hexagon socket head cap screws: (head diameter dk max, head height k max)."""
-
-DIN_974_1_CBORE_MM = {"M3": 6.5, "M4": 8.0, "M5": 10.0, "M6": 11.0, "M8": 15.0, "M10": 18.0,
-                      "M12": 20.0, "M14": 24.0, "M16": 26.0, "M20": 33.0, "M24": 40.0}
-"""DIN 974-1 counterbore diameter for ISO 4762 heads without washer (row 1, ISO 273 medium)."""
+from .standards import (DIN_974_1_CBORE_MM, ISO_261_PITCH_MM, ISO_273_MEDIUM_MM, ISO_4762_HEAD_MM,
+                        TAP_DRILL_MM)
 
 # ---------------------------------------------------------------------------------------------
 # Design choices (not catalog data); each is printed in the Part notes where it is used.
