@@ -45,19 +45,24 @@ def average_load(loads_N: Sequence[float], cycle: Sequence[Segment], exponent: f
     return (sum(w * abs(f) ** exponent for w, f in zip(weights, loads_N)) / total) ** (1 / exponent)
 
 
+def radial_equivalent(fr_av: float, fa_av: float, load: ExternalLoad, offset_R_m: float,
+                      dp_m: float) -> float:
+    """Frav + 2·(Frav·(Lr+R) + Faav·La)/dp [N], the radial term of 031-4 and 032-2."""
+    return fr_av + 2.0 * (fr_av * (load.Lr_m + offset_R_m) + fa_av * load.La_m) / dp_m
+
+
 def load_factors(fr_av: float, fa_av: float, load: ExternalLoad, offset_R_m: float,
                  dp_m: float) -> tuple[float, float]:
     """(X, Y) from formula 031-4."""
-    radial_equiv = fr_av + 2.0 * (fr_av * (load.Lr_m + offset_R_m) + fa_av * load.La_m) / dp_m
-    return (1.0, 0.45) if fa_av / radial_equiv <= 1.5 else (0.67, 0.67)
+    ratio = fa_av / radial_equivalent(fr_av, fa_av, load, offset_R_m, dp_m)
+    return (1.0, 0.45) if ratio <= 1.5 else (0.67, 0.67)
 
 
 def dynamic_equivalent_load(fr_av: float, fa_av: float, load: ExternalLoad, offset_R_m: float,
                             dp_m: float) -> float:
     """Pc [N], formula 032-2."""
     x, y = load_factors(fr_av, fa_av, load, offset_R_m, dp_m)
-    return x * (fr_av + 2.0 * (fr_av * (load.Lr_m + offset_R_m) + fa_av * load.La_m) / dp_m) \
-        + y * fa_av
+    return x * radial_equivalent(fr_av, fa_av, load, offset_R_m, dp_m) + y * fa_av
 
 
 def bearing_life_hours(c_N: float, pc_N: float, fw: float, nav_rpm: float,
