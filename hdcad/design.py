@@ -42,35 +42,83 @@ def interference_check(pairs: list[tuple[str, str, float]], masses: dict[str, fl
                      "masses_kg": masses})
 
 
+def oil_level_check(model: GearModel, parts: list, duty: Duty, options: DesignOptions,
+                    catalog: Catalog) -> CheckResult:
+    """`oil_level` on the generated parts: FD-2 casings hold the oil; other families do not."""
+    from .checks.oil_level import oil_level
+    from .geometry.oil import fd_casing_cavity, volume_below_mL
+    level = (catalog.datum("fd_oil_level", catalog.find("fd_oil_level", size=model.size), "A_mm")
+             if model.is_fd else None)
+    args = dict(lubrication=duty.lubrication, level_mm=None if level is None else float(level),
+                level_source=level.source if level else "", axis=options.axis,
+                cavity_depth_mm=None, seal_shaft_mm=None, oil_volume_mL=None)
+    if model.family == "FD-2" and level is not None:
+        cavity = fd_casing_cavity(parts)
+        args.update(cavity_depth_mm=cavity.depth_mm, seal_shaft_mm=cavity.seal_shaft_mm,
+                    oil_volume_mL=volume_below_mL(cavity.solid, float(level)),
+                    volume_note=cavity.note,
+                    plug_radius_mm=parts[0].dimensions.get("oil_plug_radius_mm"))
+    return oil_level(**args)
+
+
+def _export_parts(parts: list, stage: Path) -> list[str]:
+    """STEP, STL and SVG of every part, and the assembly STEP; returns the file names."""
+    from .geometry.part import export_assembly, export_step, export_stl, export_svg
+    files = []
+    for part in parts:
+        for suffix, export in ((".step", export_step), (".stl", export_stl),
+                               (".svg", export_svg)):
+            export(part, stage / f"{part.name}{suffix}")
+            files.append(f"{part.name}{suffix}")
+    export_assembly(parts, stage / "assembly.step")
+    return files + ["assembly.step"]
+
+
+def _draw_parts(parts: list, stage: Path) -> list:
+    """A dimensioned drawing (SVG for the sheet, PNG beside the part) from each STEP file."""
+    from .geometry.drawing import part_drawing
+    from .report.context import Figure
+    (stage / "drawings").mkdir()
+    figures = []
+    for part in parts:
+        part_drawing(stage / f"{part.name}.step", part, stage / "drawings" / f"{part.name}.svg",
+                     stage / "drawings" / f"{part.name}.png")
+        figures.append(Figure(part.name, f"drawings/{part.name}.svg",
+                              f"front view and half section of {part.name}.step"))
+    return figures
+
+
+def _part_record(part, mass_kg: float) -> dict:
+    return {"name": part.name, "mass_kg": mass_kg, "dimensions": part.dimensions,
+            "notes": part.notes, "purchased": part.purchased,
+            "bolt_circles": [b.__dict__ for b in part.bolt_circles]}
+
+
 def run_design(model: GearModel, duty: Duty, options: DesignOptions, catalog: Catalog,
                out_dir: Path) -> DesignResult:
     """Build, check and export ``model``; returns what was written."""
     from .geometry.build import build_parts, interference_mm3, part_mass_kg
-    from .geometry.part import export_assembly, export_step, export_stl, export_svg
     from .checks.geometric import geometric_checks
     from .output import json_text, staged_dir
+    from .report.sheet import write_calc_sheet
 
     evaluation = run_checks(model, duty, catalog, options.input_thrust_capacity_N)
     parts = build_parts(model, catalog, options)
     masses = {p.name: part_mass_kg(p, options.density_kg_m3) for p in parts}
     evaluation.checks += geometric_checks(model, parts, options, catalog)
+    evaluation.checks.append(oil_level_check(model, parts, duty, options, catalog))
     evaluation.checks.append(interference_check(interference_mm3(parts), masses))
     target = Path(out_dir) / model.code
-    files: list[str] = []
     with staged_dir(target) as stage:
-        for part in parts:
-            for suffix, export in ((".step", export_step), (".stl", export_stl),
-                                   (".svg", export_svg)):
-                export(part, stage / f"{part.name}{suffix}")
-                files.append(f"{part.name}{suffix}")
-        export_assembly(parts, stage / "assembly.step")
-        files.append("assembly.step")
+        files = _export_parts(parts, stage)
+        drawings = _draw_parts(parts, stage)
         result = evaluation.as_dict()
-        result.update({"design_options": options.as_dict(), "files": files + ["results.json"],
-                       "parts": [{"name": p.name, "mass_kg": masses[p.name],
-                                  "dimensions": p.dimensions, "notes": p.notes,
-                                  "bolt_circles": [b.__dict__ for b in p.bolt_circles]}
-                                 for p in parts]})
+        result.update({"design_options": options.as_dict(),
+                       "parts": [_part_record(p, masses[p.name]) for p in parts]})
+        sheet = write_calc_sheet(stage, result, evaluation, catalog, drawings)
+        files += ([f"drawings/{p.name}.png" for p in parts] + sheet["files"]
+                  + ["results.json"])
+        result.update({"files": files, "bill_of_materials": sheet["bom"],
+                       "calc_sheet": {"pages": sheet["pages"], "images": sheet["images"]}})
         (stage / "results.json").write_text(json_text(result), encoding="utf-8")
-        files.append("results.json")
     return DesignResult(evaluation, options, target, files, masses)

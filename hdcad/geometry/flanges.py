@@ -163,7 +163,8 @@ class FDDriveFlange:
         # depth = thread engagement the casing offers (311-1 M = thread × depth)
         return BoltCircle("casing screws", self.ring, self.count, self.hole, self.thread,
                           "clearance", self.row["M_depth_mm"], annulus_inner_mm=self.pilot,
-                          annulus_outer_mm=self.outer)
+                          annulus_outer_mm=self.outer,
+                          grip_mm=self.thickness - self.cbore_depth)
 
     def _dimensions(self) -> dict[str, float]:
         return {"outer_diameter_mm": self.outer, "pilot_boss_diameter_mm": self.pilot,
@@ -315,7 +316,8 @@ class GHMotorFlange:
                                              self.thread_depth,
                                              annulus_inner_mm=self.pilot,
                                              # a square's inscribed circle: conservative
-                                             annulus_outer_mm=self.square or self.outer)],
+                                             annulus_outer_mm=self.square or self.outer,
+                                             start_angle_deg=MOTOR_HOLE_START_DEG)],
                     notes=self._notes())
 
     def _dimensions(self) -> dict[str, float]:

@@ -21,6 +21,8 @@ class BoltCircle:
     depth_mm: float | None = None  # tapped depth (thread engagement available)
     annulus_inner_mm: float | None = None  # material ring the holes sit in (diameters)
     annulus_outer_mm: float | None = None
+    grip_mm: float | None = None  # clamped length under the head (clearance holes): screw length
+    start_angle_deg: float = 0.0  # angle of the first hole from +X; the others evenly spaced
 
 
 @dataclass
@@ -35,6 +37,7 @@ class Part:
     dimensions: dict[str, float] = field(default_factory=dict)
     bolt_circles: list[BoltCircle] = field(default_factory=list)
     notes: list[str] = field(default_factory=list)
+    purchased: list[dict] = field(default_factory=list)  # bought parts it holds: bearings, seals…
 
     def solid(self) -> cq.Shape:
         return self.shape.val()

@@ -25,3 +25,8 @@ ISO_4762_HEAD_MM = {"M3": (5.5, 3.0), "M4": (7.0, 4.0), "M5": (8.5, 5.0), "M6": 
 DIN_974_1_CBORE_MM = {"M3": 6.5, "M4": 8.0, "M5": 10.0, "M6": 11.0, "M8": 15.0, "M10": 18.0,
                       "M12": 20.0, "M14": 24.0, "M16": 26.0, "M20": 33.0, "M24": 40.0}
 """DIN 974-1 counterbore diameter for ISO 4762 heads without washer (row 1, ISO 273 medium)."""
+
+ISO_4762_LENGTHS_MM = (6, 8, 10, 12, 16, 20, 25, 30, 35, 40, 45, 50, 55, 60, 65, 70, 80, 90,
+                       100, 110, 120, 130, 140, 150, 160, 180, 200)
+"""ISO 4762 preferred nominal lengths l [mm] (the range M3-M24 covers; not every length exists
+for every size, e.g. M3 stops at 30 and M24 starts at 40: ask the supplier)."""

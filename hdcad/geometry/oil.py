@@ -1,0 +1,54 @@
+"""The oil cavity of a generated housing and the oil volume below a level.
+
+The axis is Z; "horizontal axis" means gravity along −Y, so the oil surface at level A is
+the plane y = −A. Volumes come from OCCT booleans on the cavity solid.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import cadquery as cq
+
+from .fd_casing import SHAFT_CLEARANCE_MM
+from .part import Part
+
+
+@dataclass
+class OilCavity:
+    solid: cq.Shape
+    depth_mm: float          # how far the cavity reaches below the axis
+    seal_shaft_mm: float | None
+    note: str                # what the cavity volume includes and leaves out
+
+
+def fd_casing_cavity(parts: list[Part]) -> OilCavity:
+    """The space the two FD casing halves enclose, in assembly coordinates.
+
+    It is the pilot-recess cylinder between the two recess floors, less the wave-generator
+    shaft. The component set itself sits in it; its own volume is not in the catalog, so the
+    oil volume from this cavity is an upper bound.
+    """
+    halves = [p for p in parts if "pilot_recess_mm" in p.dimensions]
+    pilot = min(p.dimensions["pilot_recess_mm"] for p in halves)
+    ends = [(p.offset_z_mm - p.dimensions["pilot_depth_mm"] if p.flip
+             else p.offset_z_mm + p.dimensions["pilot_depth_mm"]) for p in halves]
+    z0, z1 = min(ends), max(ends)
+    shaft = min(p.dimensions["shaft_hole_mm"] for p in halves) - 2 * SHAFT_CLEARANCE_MM
+    solid = (cq.Solid.makeCylinder(pilot / 2, z1 - z0, cq.Vector(0, 0, z0))
+             .cut(cq.Solid.makeCylinder(shaft / 2, z1 - z0, cq.Vector(0, 0, z0))))
+    return OilCavity(solid, pilot / 2, shaft,
+                     " at most: the space inside the casing halves (pilot recesses) less the "
+                     "shaft; the component set's own volume below the level is not in the "
+                     "catalog and is not subtracted")
+
+
+def volume_below_mL(solid: cq.Shape, level_mm: float) -> float:
+    """Volume [mL] of ``solid`` below the plane y = −level_mm."""
+    box = solid.BoundingBox()
+    if box.ymin >= -level_mm:
+        return 0.0
+    height = -level_mm - box.ymin
+    cutter = cq.Solid.makeBox(box.xlen + 2, height, box.zlen + 2,
+                              cq.Vector(box.xmin - 1, box.ymin, box.zmin - 1))
+    return solid.intersect(cutter).Volume() / 1000.0

@@ -1,0 +1,1 @@
+"""Results → template context → HTML/PDF. Templates (``templates/``) only format."""

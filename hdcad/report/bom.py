@@ -1,0 +1,99 @@
+"""Bill of materials of a generated design: screws, bought parts, lubricant.
+
+Screw length for a clearance bolt circle: the shortest ISO 4762 preferred length that
+reaches the design engagement (1·d in steel, as in the bolt_pattern check) past the grip,
+and no longer than grip + tapped depth (the screw must not bottom in its hole).
+The tightening torque M_A is the one the bolt_pattern check used (VDI 2230).
+
+References
+----------
+ISO 4762:2004 (hexagon socket head cap screws, preferred lengths). Seed 000 p.016 (unit and
+gear-head types ship grease-filled), p.018 (oil ISO VG68). Seed 001 p.315 (FD oil level A).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, asdict
+
+from ..geometry.standards import ISO_4762_LENGTHS_MM
+
+ENGAGEMENT_FACTOR = 1.0  # least engagement in steel as a multiple of d (bolt_pattern check)
+
+
+@dataclass
+class BomRow:
+    item: str          # screws | bearing | seal | o-ring | plug | lubricant
+    designation: str
+    quantity: str
+    part: str          # the generated part it belongs to (or "assembly")
+    note: str = ""
+
+    def as_dict(self) -> dict:
+        return asdict(self)
+
+
+def thread_d(thread: str) -> float:
+    """Nominal diameter [mm] of a metric thread ("M5" → 5, "M10×1" → 10)."""
+    return float(thread[1:].split("×")[0])
+
+
+def screw_length_mm(thread: str, grip_mm: float, tapped_depth_mm: float) -> float | None:
+    """Shortest ISO 4762 length with 1·d engagement that does not bottom; None if none fits."""
+    low = grip_mm + ENGAGEMENT_FACTOR * thread_d(thread)
+    high = grip_mm + tapped_depth_mm
+    return next((float(l) for l in ISO_4762_LENGTHS_MM if low <= l <= high), None)
+
+
+def screw_rows(part_name: str, circles: list[dict], tightening_Nm: dict[str, float],
+               bolt_class: str) -> list[BomRow]:
+    """One row per bolt circle: the hdcad screws for clearance holes, the user's for tapped."""
+    rows = []
+    for c in circles:
+        torque = tightening_Nm.get(f"{part_name}/{c['name']}")
+        ma = f"; tighten to M_A = {torque:.1f} N·m (VDI 2230, µ = 0.12)" if torque else ""
+        if c["kind"] == "clearance" and c.get("grip_mm") is not None:
+            length = screw_length_mm(c["thread"], c["grip_mm"], c["depth_mm"] or 0.0)
+            size = (f"{c['thread']}×{length:g}" if length else
+                    f"{c['thread']} (no preferred length between grip + 1·d and grip + thread "
+                    "depth: choose a special length)")
+            rows.append(BomRow("screws", f"ISO 4762 {size}-{bolt_class}", str(c["count"]),
+                               part_name, f"{c['name']} on Ø{c['diameter_mm']:g}; grip "
+                               f"{c['grip_mm']:.1f} mm, thread depth {c['depth_mm']:g} mm{ma}"))
+        else:
+            holes = "tapped holes" if c["kind"] == "tapped" else "clearance holes"
+            rows.append(BomRow("screws", f"{c['thread']} (user's)", str(c["count"]), part_name,
+                               f"{c['name']}: {holes} on Ø{c['diameter_mm']:g}, thread depth "
+                               f"{c['depth_mm']:g} mm; length from the user's part{ma}"))
+    return rows
+
+
+def lubricant_row(family: str, lubrication: str, grease: str, oil_volume_mL: float | None,
+                  level_mm: float | None) -> BomRow:
+    if family == "GH":
+        return BomRow("lubricant", "grease (factory fill)", "—", "gear head",
+                      "gear heads ship grease-filled (seed 000 p.016); no fill by the user")
+    if lubrication == "oil":
+        amount = f"≤ {oil_volume_mL:.0f} mL" if oil_volume_mL is not None else "not in catalog"
+        level = f"fill to level A = {level_mm:g} mm (table 315-1)" if level_mm else ""
+        return BomRow("lubricant", "oil ISO VG68", amount, "assembly",
+                      "; ".join(x for x in (level, "change after 100 h, then every 1000 h or "
+                                            "6 months (seed 000 p.018)") if x))
+    return BomRow("lubricant", f"grease {grease}", "not in catalog", "assembly",
+                  "grease amounts for this type are not in the seeds; add them via overlay")
+
+
+def bill_of_materials(parts: list[dict], checks: list[dict], family: str, lubrication: str,
+                      grease: str, bolt_class: str) -> list[BomRow]:
+    """BOM rows from the results.json parts and check records."""
+    torques = {c["details"].get("name"): c["inputs"]["M_A"]["value"] for c in checks
+               if c["id"] == "bolt_pattern" and "M_A" in c["inputs"]}
+    rows: list[BomRow] = []
+    for part in parts:
+        rows += screw_rows(part["name"], part["bolt_circles"], torques, bolt_class)
+        rows += [BomRow(p["item"], p["designation"], str(p["quantity"]), part["name"],
+                        p.get("note", "")) for p in part.get("purchased", [])]
+    oil = next((c for c in checks if c["id"] == "oil_level"), None)
+    volume = oil["details"].get("oil_volume_mL") if oil else None
+    level = oil["value"] if oil else None
+    rows.append(lubricant_row(family, lubrication, grease, volume, level))
+    return rows

@@ -1,0 +1,133 @@
+"""The calculation sheet: a real PDF whose text carries every check and its status, whose
+pages and images are what the design produced, and which shows a failure when there is one."""
+
+import json
+import re
+
+import pytest
+
+pytest.importorskip("cadquery")
+pypdf = pytest.importorskip("pypdf")
+
+from hdcad.cli import main  # noqa: E402
+from hdcad.report.format import check_label, status_text  # noqa: E402
+
+FAILING_DUTY = """
+cycle:
+  - {phase: start, torque_Nm: 900, time_s: 0.3, speed_rpm: 7}
+  - {phase: steady, torque_Nm: 800, time_s: 3.0, speed_rpm: 14}
+  - {phase: stop, torque_Nm: 900, time_s: 0.4, speed_rpm: 7}
+  - {phase: rest, torque_Nm: 0, time_s: 0.2, speed_rpm: 0}
+max_output_speed_rpm: 14
+max_input_speed_rpm: 1800
+required_life_h: 7000
+lubrication: grease
+"""
+
+
+def _design(tmp, model, duty):
+    code = main(["design", model, "--duty", str(duty), "--out", str(tmp)])
+    folder = tmp / model
+    return code, folder, json.loads((folder / "results.json").read_text(encoding="utf-8"))
+
+
+@pytest.fixture(scope="module")
+def gh_sheet(tmp_path_factory):
+    from hdcad.resources import examples_dir
+    return _design(tmp_path_factory.mktemp("gh"), "CSF-45-120-GH",
+                   examples_dir() / "duty_seed_example.yaml")
+
+
+@pytest.fixture(scope="module")
+def failing_sheet(tmp_path_factory):
+    tmp = tmp_path_factory.mktemp("fail")
+    duty = tmp / "overload.yaml"
+    duty.write_text(FAILING_DUTY)
+    return _design(tmp, "CSF-45-120-GH", duty)
+
+
+def _page_text(page):
+    # WeasyPrint encodes its regular font through an embedded CMap that pypdf reads as
+    # one-byte codes: each character comes out right but behind a NUL byte
+    return page.extract_text().replace("\x00", "")
+
+
+def _text(folder):
+    reader = pypdf.PdfReader(str(folder / "calc_sheet.pdf"))
+    return reader, "\n".join(_page_text(page) for page in reader.pages)
+
+
+def _summary_lines(text):
+    """Lines of the check-summary table on the cover (check label then its status)."""
+    table = text.split("Check summary", 1)[1].split("1 Inputs", 1)[0]
+    return [line for line in table.splitlines() if line.strip()]
+
+
+def test_sheet_names_the_model_and_every_check_with_its_status(gh_sheet):
+    code, folder, result = gh_sheet
+    assert code == 0  # the shipped example passes (README command 1)
+    reader, text = _text(folder)
+    assert "CSF-45-120-GH" in text and result["catalog_revision"] in text
+    lines = _summary_lines(text)
+    for check in result["checks"]:
+        label, status = check_label(check["id"], check["details"]), status_text(check["status"])
+        row = [line for line in lines if line.startswith(label + " ")
+               or line.startswith(label + "\t") or line == label]
+        assert row, f"{label} missing from the summary table"
+        assert status in row[0], (label, row[0])
+
+
+def test_every_page_has_the_header_and_a_page_number(gh_sheet):
+    _, folder, result = gh_sheet
+    reader, _ = _text(folder)
+    n = len(reader.pages)
+    assert n == result["calc_sheet"]["pages"]  # what WeasyPrint laid out is what was written
+    for i, page in enumerate(reader.pages, start=1):
+        page_text = _page_text(page)
+        assert "CSF-45-120-GH" in page_text and f"page {i} of {n}" in page_text
+
+
+def _xobject_count(reader):
+    """Images and SVG forms drawn on the pages (WeasyPrint embeds SVG as form XObjects)."""
+    count = 0
+    for page in reader.pages:
+        resources = page.get("/Resources") or {}
+        xobjects = resources.get("/XObject")
+        if xobjects:
+            count += len(xobjects.get_object())
+    return count
+
+
+def test_the_images_in_the_pdf_are_the_files_the_design_wrote(gh_sheet):
+    _, folder, result = gh_sheet
+    images = result["calc_sheet"]["images"]
+    for name in images:
+        assert (folder / name).is_file() and (folder / name).stat().st_size > 1000
+    html = (folder / "calc_sheet.html").read_text(encoding="utf-8")
+    assert sorted(re.findall(r'<img src="([^"]+)"', html)) == sorted(images)
+    # one drawing per part and the four plot kinds (life is not evaluated without base life)
+    assert {f"drawings/{p['name']}.svg" for p in result["parts"]} <= set(images)
+    assert "figures/duty_cycle.svg" in images
+    reader, _ = _text(folder)
+    assert _xobject_count(reader) >= len(images)
+
+
+def test_bill_of_materials_lists_screws_and_lubricant(gh_sheet):
+    _, folder, result = gh_sheet
+    items = {row["item"] for row in result["bill_of_materials"]}
+    assert {"screws", "lubricant"} <= items
+    _, text = _text(folder)
+    assert "Bill of materials" in text and "grease (factory fill)" in text
+
+
+def test_a_failing_design_gets_a_sheet_that_shows_the_failure(failing_sheet):
+    code, folder, result = failing_sheet
+    assert code == 1
+    failed = [check_label(c["id"], c["details"]) for c in result["checks"] if c["status"] == "fail"]
+    assert "avg_torque" in failed
+    _, text = _text(folder)
+    cover = text.split("1 Inputs")[0]
+    assert re.search(rf"{len(failed)} check\(s\) fail", cover)
+    assert "Failing checks:" in cover and all(label in cover for label in failed)
+    html = (folder / "calc_sheet.html").read_text(encoding="utf-8")
+    assert html.count('<tr class="fail">') >= len(failed)  # the rows are highlighted

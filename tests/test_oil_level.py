@@ -1,0 +1,86 @@
+"""oil_level: the pure check's criteria, and the cavity volume from OCCT against the
+circular-segment formula."""
+
+import math
+
+import pytest
+
+from hdcad.checks.oil_level import oil_level
+
+
+def _check(**kw):
+    args = dict(lubrication="oil", level_mm=15.0, level_source="table 315-1",
+                axis="horizontal", cavity_depth_mm=42.5, seal_shaft_mm=30.0,
+                oil_volume_mL=40.0)
+    args.update(kw)
+    return oil_level(**args)
+
+
+def test_level_between_seal_lip_and_cavity_bottom_passes():
+    r = _check()
+    assert r.status == "pass" and (r.value, r.limit) == (15.0, 42.5)
+    assert r.margin == pytest.approx((42.5 - 15) / 42.5)
+    assert "40 mL" in r.note and r.details["oil_volume_mL"] == 40.0
+
+
+def test_seal_lip_below_the_oil_surface_fails():
+    # a Ø40 shaft puts the lip 20 mm below the axis, under a surface 15 mm below it
+    r = _check(seal_shaft_mm=40.0)
+    assert r.status == "fail"
+    seals = next(c for c in r.details["criteria"] if c["name"] == "seals")
+    assert seals["status"] == "fail" and "stand in oil" in seals["text"]
+
+
+def test_cavity_that_does_not_reach_the_level_fails():
+    assert _check(level_mm=50.0, cavity_depth_mm=42.5).status == "fail"
+
+
+@pytest.mark.parametrize("kw, reason", [
+    ({"lubrication": "grease"}, "grease lubrication"),
+    ({"axis": "vertical"}, "vertical axis"),
+    ({"level_mm": None}, "oil level for this model missing"),
+    ({"cavity_depth_mm": None}, "oil cavity"),
+])
+def test_cases_that_cannot_be_decided_are_not_evaluated(kw, reason):
+    r = _check(**kw)
+    assert r.status == "not_evaluated" and reason in r.note
+
+
+def test_level_hole_at_radius_a_is_the_level_plug():
+    r = _check(plug_radius_mm=15.0)
+    hole = next(c for c in r.details["criteria"] if c["name"] == "level hole")
+    assert "fill until oil appears" in hole["text"]
+
+
+def _segment_area(radius, depth):
+    """Area of the part of a circle of ``radius`` lying more than ``depth`` below its centre."""
+    if depth >= radius:
+        return 0.0
+    return radius ** 2 * math.acos(depth / radius) - depth * math.sqrt(radius ** 2 - depth ** 2)
+
+
+@pytest.mark.parametrize("code", ["FD-20-80-2", "FD-25-80-2", "FD-65-78-2"])
+def test_fd_cavity_volume_matches_the_circular_segment_formula(catalog, code):
+    pytest.importorskip("cadquery")
+    from hdcad.design_options import DesignOptions
+    from hdcad.geometry.build import build_parts
+    from hdcad.geometry.oil import fd_casing_cavity, volume_below_mL
+    from hdcad.models import resolve
+    model = resolve(code, catalog)
+    size = model.size
+    parts = build_parts(model, catalog, DesignOptions())
+    cavity = fd_casing_cavity(parts)
+    level = float(catalog.find("fd_oil_level", size=size)["A_mm"])
+    # independent: the cavity is the FD-2 φA g7 cylinder (table 312-1) over both pilot depths
+    # and the running gap, less the WG shaft (bore of support bearing Q)
+    big_r = catalog.find("fd2_dimensions", size=size)["A_g7_mm"] / 2
+    half = parts[0].dimensions
+    length = 2 * half["pilot_depth_mm"] + DesignOptions().running_gap_mm
+    small_r = cavity.seal_shaft_mm / 2
+    expected = (_segment_area(big_r, level) - _segment_area(small_r, level)) * length / 1000
+    # OCCT booleans on exact cylinders: agreement to 0.1 % (tessellation plays no part)
+    assert volume_below_mL(cavity.solid, level) == pytest.approx(expected, rel=1e-3)
+    assert cavity.depth_mm == big_r
+    # the cavity is empty space: it overlaps no generated part
+    for part in parts:
+        assert cavity.solid.intersect(part.placed()).Volume() < 1e-3
