@@ -47,8 +47,22 @@ OVERLAY_ONLY_TABLES: dict[str, tuple[tuple[str, ...], tuple[str, ...]]] = {
          "K3_Nm_per_rad", "theta1_rad", "theta2_rad", "source"),
         ("series", "size", "ratio"),
     ),
-    "component_outline": ((), ("series", "size")),
-    "component_housing": ((), ("series", "size")),
+    # CSF/CSG-2A-GR outline (catalog "outline dimensions"); see catalog/README.md
+    "component_outline": (
+        ("series", "size", "cs_outer_diameter_mm", "cs_width_mm", "cs_bolt_circle_mm",
+         "cs_bolt_count", "cs_bolt_thread", "fs_outer_diameter_mm", "fs_length_mm",
+         "fs_boss_diameter_mm", "fs_bolt_circle_mm", "fs_bolt_count", "fs_bolt_thread",
+         "wg_hub_width_mm", "wg_hub_bore_mm", "wg_protrusion_mm", "cring_hook_radius_mm",
+         "cring_protrusion_mm", "source"),
+        ("series", "size"),
+    ),
+    # CSF/CSG-2A-GR "recommended housing dimensions" (inner wall); see catalog/README.md
+    "component_housing": (
+        ("series", "size", "fs_wall_diameter_mm", "diaphragm_side_diameter_mm",
+         "diaphragm_side_depth_mm", "cring_clearance_min_mm", "output_flange_radius_mm",
+         "fs_radial_deflection_mm", "oil_level_from_axis_mm", "grease_g", "source"),
+        ("series", "size"),
+    ),
 }
 # Key columns of the shipped tables: an overlay row with the same key replaces the row.
 TABLE_KEYS: dict[str, tuple[str, ...]] = {

@@ -6,7 +6,8 @@ bad input (exit 2) leaves nothing behind; a design whose checks fail is written 
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+import time
+from dataclasses import dataclass, field
 from pathlib import Path
 
 from .catalog import Catalog
@@ -24,6 +25,7 @@ class DesignResult:
     folder: Path
     files: list[str]
     masses_kg: dict[str, float]
+    timings_s: dict[str, float] = field(default_factory=dict)  # per stage, for benchmarks
 
 
 def interference_check(pairs: list[tuple[str, str, float]], masses: dict[str, float]
@@ -59,6 +61,21 @@ def oil_level_check(model: GearModel, parts: list, duty: Duty, options: DesignOp
                     volume_note=cavity.note,
                     plug_radius_mm=parts[0].dimensions.get("oil_plug_radius_mm"))
     return oil_level(**args)
+
+
+class _Clock:
+    """Wall time of each stage of a design run (reported by benchmarks/bench_design.py)."""
+
+    def __init__(self):
+        self.laps: dict[str, float] = {}
+        self._last = time.perf_counter()
+
+    def lap(self, name: str, value=None):
+        """Close the stage ``name`` (evaluated just before this call); passes ``value`` on."""
+        now = time.perf_counter()
+        self.laps[name] = now - self._last
+        self._last = now
+        return value
 
 
 def _export_parts(parts: list, stage: Path) -> list[str]:
@@ -99,26 +116,32 @@ def run_design(model: GearModel, duty: Duty, options: DesignOptions, catalog: Ca
     """Build, check and export ``model``; returns what was written."""
     from .geometry.build import build_parts, interference_mm3, part_mass_kg
     from .checks.geometric import geometric_checks
+    from .geometry.clearance import inner_wall_clearance
     from .output import json_text, staged_dir
     from .report.sheet import write_calc_sheet
 
+    clock = _Clock()
     evaluation = run_checks(model, duty, catalog, options.input_thrust_capacity_N)
-    parts = build_parts(model, catalog, options)
+    clock.lap("checks")
+    parts = clock.lap("build", build_parts(model, catalog, options))
     masses = {p.name: part_mass_kg(p, options.density_kg_m3) for p in parts}
     evaluation.checks += geometric_checks(model, parts, options, catalog)
+    evaluation.checks.append(inner_wall_clearance(model, parts, catalog, options))
     evaluation.checks.append(oil_level_check(model, parts, duty, options, catalog))
     evaluation.checks.append(interference_check(interference_mm3(parts), masses))
+    clock.lap("geometric checks")
     target = Path(out_dir) / model.code
     with staged_dir(target) as stage:
-        files = _export_parts(parts, stage)
-        drawings = _draw_parts(parts, stage)
+        files = clock.lap("export", _export_parts(parts, stage))
+        drawings = clock.lap("drawings", _draw_parts(parts, stage))
         result = evaluation.as_dict()
         result.update({"design_options": options.as_dict(),
                        "parts": [_part_record(p, masses[p.name]) for p in parts]})
-        sheet = write_calc_sheet(stage, result, evaluation, catalog, drawings)
+        sheet = clock.lap("calc sheet", write_calc_sheet(stage, result, evaluation, catalog,
+                                                         drawings))
         files += ([f"drawings/{p.name}.png" for p in parts] + sheet["files"]
                   + ["results.json"])
         result.update({"files": files, "bill_of_materials": sheet["bom"],
                        "calc_sheet": {"pages": sheet["pages"], "images": sheet["images"]}})
         (stage / "results.json").write_text(json_text(result), encoding="utf-8")
-    return DesignResult(evaluation, options, target, files, masses)
+    return DesignResult(evaluation, options, target, files, masses, clock.laps)

@@ -12,7 +12,7 @@ from ..models import GearModel
 from .bolts import bolt_pattern
 from .fd import momentary_allowance
 from .input_bore import KEY_LENGTH_FACTOR, KEY_SOURCE, key_stresses, select_key, input_bore
-from .record import CheckResult, Quantity, compared, not_evaluated
+from .record import PASS, CheckResult, Quantity, compared, not_evaluated
 
 FD_ADJUST_EFFICIENCY = 0.6  # seed 001 p.309: the FD example's efficiency for the WG torque
 
@@ -73,9 +73,39 @@ def _bore_check(model, catalog, options) -> CheckResult:
                                  "F_min ≤ d ≤ F_max", "input_shaft_mm (the motor shaft) in the "
                                  "design options")
         return _fixed_range(model, catalog, options)
-    return input_bore(options.input_shaft_mm or 0.0, model.size, torque or 0.0,
-                      catalog.find("wg_hub_bore", size=model.size),
-                      catalog.find("wg_plug_bore", size=model.size))
+    return _component_bore(model, catalog, options, torque)
+
+
+def _component_bore(model, catalog, options, torque: float | None) -> CheckResult:
+    """2A-GR: the requested input shaft (default: the standard hub bore of 027-1) against
+    the hub and plug bores (027-1/027-2) and its JIS key; not evaluated without a torque."""
+    hub = catalog.find("wg_hub_bore", size=model.size)
+    shaft = options.input_shaft_mm
+    if shaft is None and hub is not None:
+        shaft = hub["standard_H7_mm"]
+    result = input_bore(shaft or 0.0, model.size, torque or 0.0, hub,
+                        catalog.find("wg_plug_bore", size=model.size))
+    if options.input_shaft_mm is None:
+        result.note = "input_shaft_mm not given: the standard hub bore is checked; " + result.note
+    if torque is None and result.status == PASS:
+        return not_evaluated(result.id, result.title, result.family, result.formula,
+                             "momentary torque of the model (key load) missing from the "
+                             "catalog", result.inputs, result.value, result.unit,
+                             result.source, note=f"bore within the allowed range "
+                                                 f"({result.note})", details=result.details)
+    return result
+
+
+def _torque_missing(record: CheckResult) -> CheckResult:
+    """A bolt record whose geometry passes but whose load is unknown is not evaluated."""
+    if record.status != PASS:
+        return record
+    return not_evaluated(record.id, record.title, record.family, record.formula,
+                         "momentary torque of the model missing from the catalog (the torque "
+                         "capacity has nothing to be compared with)", record.inputs,
+                         record.value, record.unit, record.source,
+                         note=f"geometry and thread criteria pass ({record.note})",
+                         details=record.details)
 
 
 def _fixed_range(model, catalog, options) -> CheckResult:
@@ -97,15 +127,17 @@ def geometric_checks(model: GearModel, parts: list, options: DesignOptions,
                      catalog: Catalog) -> list[CheckResult]:
     """input_bore and one bolt_pattern record per bolt circle of every part."""
     checks = [_bore_check(model, catalog, options)]
-    out_torque = momentary_torque_Nm(model) or 0.0
+    known = momentary_torque_Nm(model)
+    out_torque = known or 0.0
     for part in parts:
         # the motor flange carries the motor's reaction torque: output torque / R
         torque = out_torque / model.ratio if part.name == "motor_flange" else out_torque
         for circle in part.bolt_circles:
-            checks.append(bolt_pattern(
+            record = bolt_pattern(
                 f"{part.name}/{circle.name}", circle.diameter_mm, circle.count, circle.thread,
                 circle.kind, circle.annulus_inner_mm, circle.annulus_outer_mm, circle.depth_mm,
                 options.bolt_class, options.friction_coefficient, torque,
                 options.bolt_safety_factor, catalog=catalog,
-                tapped_material="steel" if circle.kind == "clearance" else options.material))
+                tapped_material="steel" if circle.kind == "clearance" else options.material)
+            checks.append(record if known is not None else _torque_missing(record))
     return checks

@@ -4,6 +4,8 @@ FD-…-2: the two casing halves of the FD-0 unit (seed 001 p.315: casings and be
 FD-2 follow the FD-0 unit), placed back to back with the running gap between them.
 FD-…-0: a drive flange on each turning casing half, for the user's gears or pulleys.
 CSF/CSG-…-GH: the motor adapter flange for the chosen flange code.
+CSF/CSG-…-2A-GR: housing, input cover and output flange from the overlay tables
+component_outline and component_housing (the seeds have neither).
 """
 
 from __future__ import annotations
@@ -22,6 +24,8 @@ MISSING_COMPONENT_TABLES = (
 
 def build_parts(model: GearModel, catalog: Catalog, options: DesignOptions) -> list[Part]:
     """The parts of ``model``, placed for the assembly. InputError for impossible requests."""
+    missing = [t for t in MISSING_COMPONENT_TABLES
+               if catalog.find(t, series=model.series, size=model.size) is None]
     try:
         if model.family == "FD-2":
             return _fd_casing(model, catalog, options)
@@ -29,12 +33,14 @@ def build_parts(model: GearModel, catalog: Catalog, options: DesignOptions) -> l
             return _fd_flanges(model, catalog, options)
         if model.family == "GH":
             return [_gh_flange(model, catalog, options)]
+        if model.family == "2A-GR" and not missing:
+            return _component_set(model, catalog, options)
     except ValueError as exc:
         raise InputError("design", str(exc).splitlines()[0]) from None
-    missing = [t for t in MISSING_COMPONENT_TABLES if not catalog.has(t)]
-    raise InputError("model", f"{model.code}: the housing needs the tables {', '.join(missing)} "
-                              "(outline and recommended housing dimensions), which the seeds do "
-                              "not contain; supply them with --catalog-overlay")
+    raise InputError("model", f"{model.code}: the housing needs a {model.series} size "
+                              f"{model.size} row in the tables {', '.join(missing)} (outline "
+                              "and recommended housing dimensions), which the seeds do not "
+                              "contain; supply them with --catalog-overlay")
 
 
 def _fd_casing(model, catalog, options) -> list[Part]:
@@ -68,6 +74,11 @@ def _gh_flange(model, catalog, options) -> Part:
         raise ValueError(f"motor_flange {code!r} is not available for {model.series}-"
                          f"{model.size}; complete codes: {', '.join(codes)}")
     return GHMotorFlange(model.series, model.size, code, catalog, options).build()
+
+
+def _component_set(model, catalog, options) -> list[Part]:
+    from .component_housing import ComponentSetHousing
+    return ComponentSetHousing(model.series, model.size, catalog, options).build_all()
 
 
 def part_mass_kg(part: Part, density_kg_m3: float) -> float:

@@ -35,20 +35,8 @@ from ..design_options import DesignOptions
 from .part import BoltCircle, Part
 from .standards import DIN_974_1_CBORE_MM, ISO_273_MEDIUM_MM, ISO_4762_HEAD_MM, TAP_DRILL_MM
 
-# ---------------------------------------------------------------------------------------------
-# Standard data, nominal values in mm (only the rows the FD sizes 20-100 need).
-# ---------------------------------------------------------------------------------------------
-ISO_15_BEARING_MM = {"6004": (20.0, 42.0, 12.0), "6006": (30.0, 55.0, 13.0),
-                     "6008": (40.0, 68.0, 15.0), "6010": (50.0, 80.0, 16.0),
-                     "6012": (60.0, 95.0, 18.0), "6014": (70.0, 110.0, 20.0),
-                     "6018": (90.0, 140.0, 24.0), "6022": (110.0, 170.0, 28.0)}
-"""ISO 15 radial bearings, boundary dimensions, diameter series 0 (60xx): (d, D, B)."""
-
-ISO_6194_SEAL_MM = {20.0: (35.0, 7.0), 30.0: (42.0, 7.0), 40.0: (55.0, 8.0),
-                    50.0: (65.0, 8.0), 60.0: (80.0, 8.0), 70.0: (90.0, 10.0),
-                    90.0: (120.0, 12.0), 110.0: (130.0, 12.0)}
-"""ISO 6194-1 / DIN 3760 rotary shaft lip seals: shaft d1 → (housing bore d2, width b).
-One listed size per shaft; for d1 = 40 DIN 3760:1996 gives b = 8 (ISO 6194-1:1982 had 7)."""
+BEARING_TABLE = "deep_groove_bearing_iso15"   # ISO 15 60xx rows (catalog, standard data)
+SEAL_TABLE = "shaft_seal_iso6194"             # ISO 6194-1 / DIN 3760 rows (catalog)
 
 OIL_PLUG_THREAD = "M10×1"
 OIL_PLUG_TAP_DRILL_MM = 9.0
@@ -79,6 +67,36 @@ def _table_value(table: dict, key, what: str):
         raise ValueError(f"{what} {key!r} is not in hdcad.geometry.fd_casing's table; "
                          f"known: {', '.join(map(str, table))}")
     return table[key]
+
+
+def bearing_dimensions(catalog: Catalog, designation: str) -> tuple[float, float, float]:
+    """Bore d, outside diameter D and width B [mm] of a 60xx deep groove ball bearing.
+
+    References
+    ----------
+    ISO 15:2017, diameter series 0: catalog table ``deep_groove_bearing_iso15``.
+    """
+    row = catalog.find(BEARING_TABLE, model=str(designation))
+    if row is None:
+        known = ", ".join(r["model"] for r in catalog.rows(BEARING_TABLE))
+        raise ValueError(f"bearing {designation!r} is not in catalog table {BEARING_TABLE}; "
+                         f"known: {known}")
+    return row["d_mm"], row["D_mm"], row["B_mm"]
+
+
+def seal_dimensions(catalog: Catalog, shaft_mm: float) -> tuple[float, float]:
+    """Housing bore d2 and width b [mm] of the rotary shaft lip seal for shaft d1 [mm].
+
+    References
+    ----------
+    ISO 6194-1:1982 / DIN 3760:1996: catalog table ``shaft_seal_iso6194`` (one size per d1).
+    """
+    row = catalog.find(SEAL_TABLE, d1_mm=float(shaft_mm))
+    if row is None:
+        known = ", ".join(f"{r['d1_mm']:g}" for r in catalog.rows(SEAL_TABLE))
+        raise ValueError(f"no shaft seal for a {shaft_mm:g} mm shaft in catalog table "
+                         f"{SEAL_TABLE}; shafts: {known}")
+    return row["d2_mm"], row["b_mm"]
 
 
 def _cylinder(diameter: float, z0: float, z1: float, x: float = 0.0, y: float = 0.0) -> cq.Solid:
@@ -143,7 +161,7 @@ class FDCasingHalf:
         if oil is None or oil.get("A_mm") is None:
             raise ValueError(f"{self.label}: oil level A (table 315-1, {self.OIL}) is missing")
         self.oil_level = float(oil["A_mm"])
-        self._standard_parts()
+        self._standard_parts(catalog)
         self._axial_layout()
         self._check_rings()
         self._place_oil_plug()
@@ -161,14 +179,16 @@ class FDCasingHalf:
         return row
 
     # -- dimensions ------------------------------------------------------------------------------
-    def _standard_parts(self) -> None:
+    def _standard_parts(self, catalog: Catalog) -> None:
         """Bearing Q (ISO 15), its seal (ISO 6194-1) and the screw/hole sizes."""
         label = self.label
         self.bearing = str(self.fd0["Q_bearing"]).lstrip("#")
-        self.bore_d, self.bearing_od, self.bearing_w = _table_value(
-            ISO_15_BEARING_MM, self.bearing, f"{label}: bearing")
-        self.seal_od, self.seal_w = _table_value(ISO_6194_SEAL_MM, self.bore_d,
-                                                 f"{label}: seal for shaft")
+        try:
+            self.bore_d, self.bearing_od, self.bearing_w = bearing_dimensions(catalog,
+                                                                              self.bearing)
+            self.seal_od, self.seal_w = seal_dimensions(catalog, self.bore_d)
+        except ValueError as exc:
+            raise ValueError(f"{label}: {exc}") from None
         self.screw, self.gear_thread = self.fd2["K_thread"], self.fd0["M_thread"]
         self.clearance = _table_value(ISO_273_MEDIUM_MM, self.screw, f"{label}: screw")
         self.cbore = DIN_974_1_CBORE_MM[self.screw]
@@ -262,7 +282,8 @@ class FDCasingHalf:
             raise ValueError(f"{self.label}: the cut left {len(solids)} solids instead of one")
         return Part(name=f"casing_half_{self.side}", shape=cq.Workplane("XY").add(solids[0]),
                     color=COLORS[self.side], dimensions=self._dimensions(),
-                    bolt_circles=self._bolt_circles(), notes=self._notes())
+                    bolt_circles=self._bolt_circles(), notes=self._notes(),
+                    purchased=self._purchased())
 
     def _bolt_circles(self) -> list[BoltCircle]:
         fd0, fd2 = self.fd0, self.fd2
@@ -272,10 +293,23 @@ class FDCasingHalf:
         return [BoltCircle("spline_screws", fd2["I_mm"], fd2["J_count"], self.clearance,
                            self.screw, "clearance", fd2["K_depth_mm"],
                            annulus_inner_mm=self._dimensions()["bearing_seat_mm"],
-                           annulus_outer_mm=fd0["A_mm"]),
+                           annulus_outer_mm=fd0["A_mm"],
+                           grip_mm=self.floor - self.cbore_depth),
                 BoltCircle("gear_mount", fd0["K_mm"], fd0["L_count"], self.tap_drill,
                            self.gear_thread, "tapped", fd0["M_depth_mm"],
-                           annulus_inner_mm=fd0["B_H7_mm"], annulus_outer_mm=fd0["A_mm"])]
+                           annulus_inner_mm=fd0["B_H7_mm"], annulus_outer_mm=fd0["A_mm"],
+                           start_angle_deg=self._gear_start_deg())]
+
+    def _purchased(self) -> list[dict]:
+        """Bought parts this half holds (bill of materials)."""
+        d, big_d, w = self.bore_d, self.bearing_od, self.bearing_w
+        return [{"item": "bearing", "designation": f"{self.bearing} (ISO 15, {d:g}×{big_d:g}×{w:g})",
+                 "quantity": 1, "note": "support bearing Q of table 311-1 on the WG shaft"},
+                {"item": "seal", "designation": f"rotary shaft lip seal {d:g}×{self.seal_od:g}×"
+                                                f"{self.seal_w:g} (ISO 6194-1 / DIN 3760)",
+                 "quantity": 1, "note": "lip towards the oil"},
+                {"item": "plug", "designation": f"screw plug {OIL_PLUG_THREAD} (DIN 906)",
+                 "quantity": 1, "note": "oil fill/level hole"}]
 
     def _dimensions(self) -> dict[str, float]:
         return {"outer_diameter_mm": self.fd0["A_mm"], "pilot_recess_mm": self.fd2["A_g7_mm"],

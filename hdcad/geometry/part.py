@@ -23,6 +23,7 @@ class BoltCircle:
     annulus_outer_mm: float | None = None
     grip_mm: float | None = None  # clamped length under the head (clearance holes): screw length
     start_angle_deg: float = 0.0  # angle of the first hole from +X; the others evenly spaced
+    in_bom: bool = True  # False: the screws are listed with the mating clearance circle
 
 
 @dataclass

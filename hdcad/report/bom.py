@@ -49,6 +49,8 @@ def screw_rows(part_name: str, circles: list[dict], tightening_Nm: dict[str, flo
     """One row per bolt circle: the hdcad screws for clearance holes, the user's for tapped."""
     rows = []
     for c in circles:
+        if not c.get("in_bom", True):
+            continue
         torque = tightening_Nm.get(f"{part_name}/{c['name']}")
         ma = f"; tighten to M_A = {torque:.1f} N·m (VDI 2230, µ = 0.12)" if torque else ""
         if c["kind"] == "clearance" and c.get("grip_mm") is not None:
@@ -61,14 +63,16 @@ def screw_rows(part_name: str, circles: list[dict], tightening_Nm: dict[str, flo
                                f"{c['grip_mm']:.1f} mm, thread depth {c['depth_mm']:g} mm{ma}"))
         else:
             holes = "tapped holes" if c["kind"] == "tapped" else "clearance holes"
-            rows.append(BomRow("screws", f"{c['thread']} (user's)", str(c["count"]), part_name,
-                               f"{c['name']}: {holes} on Ø{c['diameter_mm']:g}, thread depth "
-                               f"{c['depth_mm']:g} mm; length from the user's part{ma}"))
+            rows.append(BomRow("screws", f"ISO 4762 {c['thread']}-{bolt_class}", str(c["count"]),
+                               part_name, f"{c['name']}: {holes} on Ø{c['diameter_mm']:g}, thread "
+                               f"depth {c['depth_mm']:g} mm; length = grip of the mating part "
+                               f"(gear, motor or flexspline flange) + 1·d ≤ grip + thread "
+                               f"depth{ma}"))
     return rows
 
 
 def lubricant_row(family: str, lubrication: str, grease: str, oil_volume_mL: float | None,
-                  level_mm: float | None) -> BomRow:
+                  level_mm: float | None, grease_g: float | None = None) -> BomRow:
     if family == "GH":
         return BomRow("lubricant", "grease (factory fill)", "—", "gear head",
                       "gear heads ship grease-filled (seed 000 p.016); no fill by the user")
@@ -78,12 +82,16 @@ def lubricant_row(family: str, lubrication: str, grease: str, oil_volume_mL: flo
         return BomRow("lubricant", "oil ISO VG68", amount, "assembly",
                       "; ".join(x for x in (level, "change after 100 h, then every 1000 h or "
                                             "6 months (seed 000 p.018)") if x))
+    if grease_g is not None:
+        return BomRow("lubricant", f"grease {grease}", f"{grease_g:g} g", "assembly",
+                      "amount from the overlay table component_housing (grease_g)")
     return BomRow("lubricant", f"grease {grease}", "not in catalog", "assembly",
                   "grease amounts for this type are not in the seeds; add them via overlay")
 
 
 def bill_of_materials(parts: list[dict], checks: list[dict], family: str, lubrication: str,
-                      grease: str, bolt_class: str) -> list[BomRow]:
+                      grease: str, bolt_class: str, grease_g: float | None = None
+                      ) -> list[BomRow]:
     """BOM rows from the results.json parts and check records."""
     torques = {c["details"].get("name"): c["inputs"]["M_A"]["value"] for c in checks
                if c["id"] == "bolt_pattern" and "M_A" in c["inputs"]}
@@ -95,5 +103,5 @@ def bill_of_materials(parts: list[dict], checks: list[dict], family: str, lubric
     oil = next((c for c in checks if c["id"] == "oil_level"), None)
     volume = oil["details"].get("oil_volume_mL") if oil else None
     level = oil["value"] if oil else None
-    rows.append(lubricant_row(family, lubrication, grease, volume, level))
+    rows.append(lubricant_row(family, lubrication, grease, volume, level, grease_g))
     return rows

@@ -75,11 +75,14 @@ def write_calc_sheet(folder: Path, result: dict, evaluation: Evaluation, catalog
     """Write calc_sheet.html and calc_sheet.pdf into ``folder``; returns names and page count."""
     figures = make_figures(evaluation, result["parts"], folder)
     options = result["design_options"]
-    bom = bill_of_materials(result["parts"], result["checks"], evaluation.model.family,
+    model = evaluation.model
+    housing_row = (catalog.find("component_housing", series=model.series, size=model.size)
+                   if catalog.has("component_housing") else None)
+    bom = bill_of_materials(result["parts"], result["checks"], model.family,
                             evaluation.duty.lubrication, evaluation.duty.grease,
-                            options["bolt_class"])
+                            options["bolt_class"], (housing_row or {}).get("grease_g"))
     context = sheet_context(result, catalog, figures, drawings, bom,
-                            evaluation.model.description)
+                            model.description)
     html = render_html(TEMPLATE, context)
     (folder / "calc_sheet.html").write_text(html, encoding="utf-8")
     pages = write_pdf(CJK.sub("[ja]", html), folder / "calc_sheet.pdf", folder)

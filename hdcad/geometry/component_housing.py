@@ -1,0 +1,424 @@
+"""Housing, input cover and output flange of a CSF/CSG-…-2A-GR cup-type component set.
+
+The seeds hold the design guidelines (seed 000 p.024) but no outline or recommended-housing
+table for the component types, so every gear dimension comes from a catalog overlay:
+``component_outline`` (circular spline CS, flexspline FS, wave generator WG, C-ring) and
+``component_housing`` (recommended inner wall); column meanings in catalog/README.md.
+
+cq_warehouse style: ``ComponentSetHousing.sizes(catalog, series)`` lists the sizes both
+tables offer; ``ComponentSetHousing(series, size, catalog, options)`` checks the request and
+raises ValueError naming what is allowed; ``build(part)`` returns one :class:`Part`
+(``PARTS``), ``build_all()`` the three parts placed for the assembly.
+
+Assembly coordinates: axis Z, z = 0 at the CS face on the diaphragm (output) side, output
+towards +z. The guidelines of p.024 this design follows: (1) input shaft, CS, output shaft
+and case concentric: the CS is centred in the housing's pilot recess, the input and output
+bearing seats are turned in the same parts that hold that recess; (4) case inner wall at the
+recommended diameter around the FS; (5) two-point support of the output (two bearings); (6)
+the flange bolted to the FS is not larger than the FS boss and has a radius on its diaphragm
+side; (7) the C-ring hook of the WG hub clears the case.
+
+* housing (output side), z = −(CS width + spigot) … z_out:
+  CS pilot recess Ø CS φ (H7) over the CS width plus the cover's spigot; cavity Ø ≥ the
+  recommended FS wall and diaphragm-side diameters from z = 0 to the end wall, which stands
+  at least the recommended diaphragm-side depth beyond the FS diaphragm; two 60xx output
+  bearings with a spacer in one bore opening towards the cavity, a shoulder, a lip seal from
+  the outer face; tapped holes on the CS bolt circle (the CS screws come from the input side
+  through the cover and the CS).
+* input cover, z = −CS width … −(CS width + thickness): spigot Ø CS φ into the housing
+  recess, clamping the CS against the housing shoulder; a cavity clearing the C-ring hook,
+  the WG hub and the deformed FS end; one 60xx bearing and a lip seal for the input shaft;
+  counterbored clearance holes for the CS screws.
+* output flange, z = FS length …: disc Ø FS boss bolted to the FS (screws from inside the
+  cup into tapped holes), radius on the diaphragm-side edge, journal through the two output
+  bearings and the seal.
+"""
+
+from __future__ import annotations
+
+import cadquery as cq
+
+from ..catalog import Catalog
+from ..design_options import DesignOptions
+from .fd_casing import (BEARING_TABLE, CBORE_SINK_MM, EDGE_MARGIN_MM, MIN_FLOOR_MM,
+                        SEAL_DEPTH_ALLOWANCE_MM, SEAL_TABLE, SHAFT_CLEARANCE_MM, _check_ring,
+                        _cylinder, _ring, bearing_dimensions, seal_dimensions)
+from .flanges import TAP_RUNOUT_PITCHES, _single_solid, thread_diameter
+from .part import BoltCircle, Part
+from .standards import (DIN_974_1_CBORE_MM, ISO_261_PITCH_MM, ISO_273_MEDIUM_MM,
+                        ISO_4762_HEAD_MM, TAP_DRILL_MM)
+
+OUTLINE, HOUSING = "component_outline", "component_housing"
+SERIES = ("CSF", "CSG")
+PARTS = ("housing", "input_cover", "output_flange")
+CASE_PARTS = ("housing", "input_cover")  # stationary walls around the gear
+NEEDED = {OUTLINE: ("cs_outer_diameter_mm", "cs_width_mm", "cs_bolt_circle_mm",
+                    "cs_bolt_count", "cs_bolt_thread", "fs_outer_diameter_mm", "fs_length_mm",
+                    "fs_boss_diameter_mm", "fs_bolt_circle_mm", "fs_bolt_count",
+                    "fs_bolt_thread", "cring_hook_radius_mm", "cring_protrusion_mm"),
+          HOUSING: ("fs_wall_diameter_mm", "diaphragm_side_diameter_mm",
+                    "diaphragm_side_depth_mm", "cring_clearance_min_mm")}
+HUB_TABLE = "wg_hub_bore"  # seed 000 table 027-1: standard WG hub bore if the outline has none
+
+# ---------------------------------------------------------------------------------------------
+# Design choices (not catalog or standard data); each is printed in the Part notes.
+# ---------------------------------------------------------------------------------------------
+WALL_ALLOWANCE_MM = 0.5     # added to every recommended diameter/depth: the machined wall
+#                             must never fall inside the recommended value
+SPIGOT_MM = 3.0             # cover spigot into the housing's CS recess (centres the cover)
+TAPPED_DEPTH_FACTOR = 2.0   # thread depth = 2·d: covers the least engagement of an aluminium
+#                             housing (2·d, hdcad.checks.bolts) as well as steel (1·d)
+FLANGE_STEP_MM = 3.0        # journal at least 3 mm radially inside the FS-boss flange
+AXIAL_GAP_MM = 1.0          # running gap: flange ↔ end wall, WG hub ↔ cover
+DEFAULT_FLANGE_RADIUS_MM = 1.0  # p.024 guideline 6 asks for a radius; its size is in the
+#                                 catalog's recommended dimensions (overlay column), else this
+COLORS = {"housing": (0.62, 0.66, 0.72), "input_cover": (0.52, 0.58, 0.68),
+          "output_flange": (0.80, 0.62, 0.30)}
+
+
+def _missing(row: dict | None, table: str) -> list[str]:
+    return list(NEEDED[table]) if row is None else [c for c in NEEDED[table]
+                                                    if row.get(c) is None]
+
+
+def _bearing_rows(catalog: Catalog) -> list[tuple[float, str]]:
+    """(bore d, designation) of the 60xx bearings that have a lip seal for their bore."""
+    seals = {r["d1_mm"] for r in catalog.rows(SEAL_TABLE)}
+    return sorted((r["d_mm"], r["model"]) for r in catalog.rows(BEARING_TABLE)
+                  if r["d_mm"] in seals)
+
+
+def bearing_for_shaft(catalog: Catalog, shaft_mm: float, largest: bool = False) -> str:
+    """Designation of the 60xx bearing (with a seal in the catalog) for a shaft [mm].
+
+    ``largest=False``: the smallest bore d ≥ shaft (the journal steps up to the bearing);
+    ``largest=True``: the largest bore d ≤ shaft (the journal is at most that wide).
+    """
+    rows = _bearing_rows(catalog)
+    fits = ([m for d, m in rows if d <= shaft_mm + 1e-9] if largest
+            else [m for d, m in rows if d >= shaft_mm - 1e-9])
+    if not fits:
+        bores = ", ".join(f"{d:g}" for d, _ in rows)
+        raise ValueError(f"no 60xx bearing with a lip seal in the catalog for a "
+                         f"{shaft_mm:g} mm shaft; bores with seals: {bores}")
+    return fits[-1] if largest else fits[0]
+
+
+class ComponentSetHousing:
+    """Housing, input cover and output flange of one CSF/CSG-2A-GR size; see module doc."""
+
+    def __init__(self, series: str, size: int, catalog: Catalog,
+                 options: DesignOptions | None = None):
+        self.options = options or DesignOptions()
+        if series not in SERIES:
+            raise ValueError(f"series {series!r} has no cup-type component set; allowed: "
+                             f"{', '.join(SERIES)}")
+        missing = self.missing_tables(catalog, series, size)
+        if missing:
+            sizes = ", ".join(map(str, self.sizes(catalog, series))) or "none"
+            raise ValueError(f"{series}-{size}-2A-GR needs rows in {', '.join(missing)} "
+                             f"(catalog overlay); sizes with both tables: {sizes}")
+        self.series, self.size = series, size
+        self.label = f"{series}-{size}-2A-GR"
+        self.outline = catalog.find(OUTLINE, series=series, size=size)
+        self.rec = catalog.find(HOUSING, series=series, size=size)
+        for table, row in ((OUTLINE, self.outline), (HOUSING, self.rec)):
+            lacking = _missing(row, table)
+            if lacking:
+                raise ValueError(f"{self.label}: the {table} row lacks {', '.join(lacking)}")
+        self._screws()
+        self._bearings(catalog)
+        self._layout()
+        self._check()
+
+    # -- catalog look-ups ---------------------------------------------------------------------
+    @staticmethod
+    def missing_tables(catalog: Catalog, series: str, size: int) -> list[str]:
+        """Overlay tables that lack a row for ``series`` ``size``."""
+        return [t for t in (OUTLINE, HOUSING) if catalog.find(t, series=series, size=size) is None]
+
+    @staticmethod
+    def sizes(catalog: Catalog, series: str) -> list[int]:
+        found = [{r["size"] for r in catalog.rows(t, series=series)} for t in (OUTLINE, HOUSING)]
+        return sorted(found[0] & found[1])
+
+    # -- dimensions ------------------------------------------------------------------------------
+    def _screws(self) -> None:
+        o = self.outline
+        self.cs_thread, self.fs_thread = o["cs_bolt_thread"], o["fs_bolt_thread"]
+        self.cs_d, self.fs_d = thread_diameter(self.cs_thread), thread_diameter(self.fs_thread)
+        self.cs_count, self.fs_count = int(o["cs_bolt_count"]), int(o["fs_bolt_count"])
+        self.cs_tap, self.fs_tap = TAP_DRILL_MM[self.cs_thread], TAP_DRILL_MM[self.fs_thread]
+        self.cs_depth = TAPPED_DEPTH_FACTOR * self.cs_d
+        self.fs_depth = TAPPED_DEPTH_FACTOR * self.fs_d
+        self.cs_drill = self.cs_depth + TAP_RUNOUT_PITCHES * ISO_261_PITCH_MM[self.cs_thread]
+        self.fs_drill = self.fs_depth + TAP_RUNOUT_PITCHES * ISO_261_PITCH_MM[self.fs_thread]
+        self.clearance = ISO_273_MEDIUM_MM[self.cs_thread]
+        self.cbore = DIN_974_1_CBORE_MM[self.cs_thread]
+        self.cbore_depth = ISO_4762_HEAD_MM[self.cs_thread][1] + CBORE_SINK_MM
+
+    def _bearings(self, catalog: Catalog) -> None:
+        o = self.outline
+        shaft, rule = self.options.input_shaft_mm, "input_shaft_mm (design option)"
+        if shaft is None:
+            shaft, rule = o.get("wg_hub_bore_mm"), "WG hub bore (component_outline)"
+        if shaft is None:
+            hub = catalog.find(HUB_TABLE, size=self.size)
+            shaft, rule = (hub or {}).get("standard_H7_mm"), "standard WG hub bore (027-1)"
+        if shaft is None:
+            raise ValueError(f"{self.label}: no input shaft diameter (input_shaft_mm, "
+                             "wg_hub_bore_mm or table 027-1)")
+        self.input_shaft, self.input_rule = float(shaft), rule
+        try:
+            self.in_bearing = bearing_for_shaft(catalog, self.input_shaft)
+            self.out_bearing = bearing_for_shaft(
+                catalog, o["fs_boss_diameter_mm"] - 2 * FLANGE_STEP_MM, largest=True)
+            self.in_d, self.in_D, self.in_B = bearing_dimensions(catalog, self.in_bearing)
+            self.out_d, self.out_D, self.out_B = bearing_dimensions(catalog, self.out_bearing)
+            self.in_seal = seal_dimensions(catalog, self.in_d)
+            self.out_seal = seal_dimensions(catalog, self.out_d)
+        except ValueError as exc:
+            raise ValueError(f"{self.label}: {exc}") from None
+
+    def _layout(self) -> None:
+        o, h, wall = self.outline, self.rec, self.options.wall_mm
+        self.housing_od = o["cs_outer_diameter_mm"] + 2 * wall
+        self.cavity_d = (max(h["fs_wall_diameter_mm"], h["diaphragm_side_diameter_mm"])
+                         + WALL_ALLOWANCE_MM)
+        self.recess_depth = o["cs_width_mm"] + SPIGOT_MM
+        # output flange: the tapped FS-screw holes plus a floor set its thickness
+        self.flange_t = self.fs_drill + MIN_FLOOR_MM
+        self.flange_r = h.get("output_flange_radius_mm") or DEFAULT_FLANGE_RADIUS_MM
+        self.cavity_beyond = max(h["diaphragm_side_depth_mm"] + WALL_ALLOWANCE_MM,
+                                 self.flange_t + AXIAL_GAP_MM)
+        self.z_wall = o["fs_length_mm"] + self.cavity_beyond
+        self.bearing_len = 3 * self.out_B          # two bearings + a spacer of width B
+        self.z_shoulder = self.z_wall + self.bearing_len
+        self.out_seal_depth = self.out_seal[1] + SEAL_DEPTH_ALLOWANCE_MM
+        self.z_out = self.z_shoulder + wall + self.out_seal_depth
+        self.journal_len = self.z_out - o["fs_length_mm"] + self.out_d  # stick-out d
+        # input cover, measured from the CS input face outwards
+        self.cover_cavity_d = max(h["fs_wall_diameter_mm"],
+                                  2 * (o["cring_hook_radius_mm"] + h["cring_clearance_min_mm"])
+                                  ) + WALL_ALLOWANCE_MM
+        self.cover_cavity_depth = max(
+            o["cring_protrusion_mm"] + h["cring_clearance_min_mm"],
+            (o.get("wg_protrusion_mm") or 0.0) + AXIAL_GAP_MM) + WALL_ALLOWANCE_MM
+        self.in_seal_depth = self.in_seal[1] + SEAL_DEPTH_ALLOWANCE_MM
+        self.cover_t = max(self.cover_cavity_depth + self.in_B + wall + self.in_seal_depth,
+                           SPIGOT_MM + self.cbore_depth + MIN_FLOOR_MM)
+
+    def _check(self) -> None:
+        o, h, label = self.outline, self.rec, self.label
+        cs_od = o["cs_outer_diameter_mm"]
+        # (inner feature, Ø, outer feature, Ø): each inner one must fit inside its outer one
+        nested = [("FS outside diameter", o["fs_outer_diameter_mm"], "recommended FS wall",
+                   h["fs_wall_diameter_mm"]),
+                  ("housing cavity", self.cavity_d, "CS outside diameter (shoulder)", cs_od),
+                  ("cover cavity", self.cover_cavity_d, "CS outside diameter (spigot)", cs_od),
+                  ("output bearing seat", self.out_D, "housing cavity", self.cavity_d),
+                  ("FS-boss flange + running gap", o["fs_boss_diameter_mm"] + 2 * AXIAL_GAP_MM,
+                   "housing cavity", self.cavity_d),
+                  ("input bearing seat", self.in_D, "cover cavity", self.cover_cavity_d)]
+        for inner_name, inner, outer_name, outer in nested:
+            if inner >= outer:
+                raise ValueError(f"{label}: {inner_name} Ø{inner:g} does not fit inside the "
+                                 f"{outer_name} Ø{outer:g}")
+        _check_ring(f"{label} housing cs_screws", o["cs_bolt_circle_mm"], self.cs_count,
+                    self.cs_d, self.cavity_d, cs_od)
+        _check_ring(f"{label} input_cover cs_screws", o["cs_bolt_circle_mm"], self.cs_count,
+                    self.clearance, self.cover_cavity_d, cs_od)
+        _check_ring(f"{label} input_cover counterbores", o["cs_bolt_circle_mm"], self.cs_count,
+                    self.cbore, max(self.in_D, self.in_seal[0]), self.housing_od)
+        _check_ring(f"{label} output_flange fs_screws", o["fs_bolt_circle_mm"], self.fs_count,
+                    self.fs_d, 0.0, o["fs_boss_diameter_mm"])
+
+    # -- solids ------------------------------------------------------------------------------
+    def build(self, part: str = "housing") -> Part:
+        """One part, in its own coordinates (see :meth:`build_all` for the placement)."""
+        builders = {"housing": self._housing, "input_cover": self._input_cover,
+                    "output_flange": self._output_flange}
+        if part not in builders:
+            raise ValueError(f"part {part!r} is not a {self.label} part; allowed: "
+                             f"{', '.join(PARTS)}")
+        return builders[part]()
+
+    def build_all(self) -> list[Part]:
+        """The three parts placed coaxially in assembly coordinates."""
+        housing, cover, flange = (self.build(p) for p in PARTS)
+        cover.flip, cover.offset_z_mm = True, -self.outline["cs_width_mm"]
+        flange.offset_z_mm = self.outline["fs_length_mm"]
+        return [housing, cover, flange]
+
+    def _housing(self) -> Part:
+        o = self.outline
+        z0, z1 = -self.recess_depth, self.z_out
+        cutters = [_cylinder(o["cs_outer_diameter_mm"], z0 - 1, 0),
+                   _cylinder(self.cavity_d, -1, self.z_wall),
+                   _cylinder(self.out_D, self.z_wall - 1, self.z_shoulder),
+                   _cylinder(self.out_d + 2 * SHAFT_CLEARANCE_MM, self.z_shoulder - 1, z1 + 1),
+                   _cylinder(self.out_seal[0], z1 - self.out_seal_depth, z1 + 1)]
+        cutters += [_cylinder(self.cs_tap, -1, self.cs_drill, x, y)
+                    for x, y in _ring(o["cs_bolt_circle_mm"], self.cs_count, 0.0)]
+        shape = _single_solid(_cylinder(self.housing_od, z0, z1), cutters, self.label)
+        return Part("housing", shape, COLORS["housing"], dimensions=self._housing_dims(),
+                    bolt_circles=[self._cs_circle()], notes=self._notes(),
+                    purchased=self._purchased("housing"))
+
+    def _input_cover(self) -> Part:
+        o, t, depth = self.outline, self.cover_t, self.cover_cavity_depth
+        body = _cylinder(o["cs_outer_diameter_mm"], 0, SPIGOT_MM).fuse(
+            _cylinder(self.housing_od, SPIGOT_MM, t))
+        cutters = [_cylinder(self.cover_cavity_d, -1, depth),
+                   _cylinder(self.in_D, depth - 1, depth + self.in_B),
+                   _cylinder(self.in_d + 2 * SHAFT_CLEARANCE_MM, depth, t + 1),
+                   _cylinder(self.in_seal[0], t - self.in_seal_depth, t + 1)]
+        for x, y in _ring(o["cs_bolt_circle_mm"], self.cs_count, 0.0):
+            cutters += [_cylinder(self.clearance, -1, t + 1, x, y),
+                        _cylinder(self.cbore, t - self.cbore_depth, t + 1, x, y)]
+        shape = _single_solid(body, cutters, self.label)
+        return Part("input_cover", shape, COLORS["input_cover"],
+                    dimensions=self._cover_dims(), bolt_circles=[self._cover_circle()],
+                    notes=self._notes(), purchased=self._purchased("input_cover"))
+
+    def _output_flange(self) -> Part:
+        o = self.outline
+        boss = o["fs_boss_diameter_mm"]
+        body = (cq.Workplane("XY").circle(boss / 2).extrude(self.flange_t)
+                .faces("<Z").edges().fillet(self.flange_r)
+                .faces(">Z").workplane().circle(self.out_d / 2).extrude(self.journal_len))
+        cutters = [_cylinder(self.fs_tap, -1, self.fs_drill, x, y)
+                   for x, y in _ring(o["fs_bolt_circle_mm"], self.fs_count, 0.0)]
+        shape = _single_solid(body.val(), cutters, self.label)
+        return Part("output_flange", shape, COLORS["output_flange"],
+                    dimensions=self._flange_dims(), bolt_circles=[self._fs_circle()],
+                    notes=self._notes())
+
+    def _cs_circle(self) -> BoltCircle:
+        # the CS screws thread into the housing; its material ring runs from the cavity to
+        # the housing outside diameter
+        return BoltCircle("cs_screws", self.outline["cs_bolt_circle_mm"], self.cs_count,
+                          self.cs_tap, self.cs_thread, "tapped", self.cs_depth,
+                          annulus_inner_mm=self.cavity_d, annulus_outer_mm=self.housing_od,
+                          in_bom=False)
+
+    def _cover_circle(self) -> BoltCircle:
+        # counterbored clearance holes; each screw clamps cover + CS and threads into the
+        # housing's tapped holes (cs_screws)
+        return BoltCircle("cs_screws_cover", self.outline["cs_bolt_circle_mm"], self.cs_count,
+                          self.clearance, self.cs_thread, "clearance", self.cs_depth,
+                          annulus_inner_mm=max(self.in_D, self.in_seal[0]),
+                          annulus_outer_mm=self.housing_od,
+                          grip_mm=self.cover_t - self.cbore_depth + self.outline["cs_width_mm"])
+
+    def _purchased(self, part: str) -> list[dict]:
+        """Bought parts each part holds (bill of materials)."""
+        def bearing(name, d, big_d, b, qty, note):
+            return {"item": "bearing", "designation": f"{name} (ISO 15, {d:g}×{big_d:g}×{b:g})",
+                    "quantity": qty, "note": note}
+
+        def seal(d, seal_dims, note):
+            return {"item": "seal", "designation": f"rotary shaft lip seal {d:g}×"
+                    f"{seal_dims[0]:g}×{seal_dims[1]:g} (ISO 6194-1 / DIN 3760)",
+                    "quantity": 1, "note": note}
+        if part == "housing":
+            return [bearing(self.out_bearing, self.out_d, self.out_D, self.out_B, 2,
+                            "two-point support of the output flange journal"),
+                    seal(self.out_d, self.out_seal, "output shaft")]
+        if part == "input_cover":
+            return [bearing(self.in_bearing, self.in_d, self.in_D, self.in_B, 1,
+                            "input shaft support in the cover"),
+                    seal(self.in_d, self.in_seal, "input shaft")]
+        return []
+
+    def _fs_circle(self) -> BoltCircle:
+        # blind tapped holes in a solid disc (no bore: inner edge Ø0), outer edge = the
+        # FS-boss flange
+        return BoltCircle("fs_screws", self.outline["fs_bolt_circle_mm"], self.fs_count,
+                          self.fs_tap, self.fs_thread, "tapped", self.fs_depth,
+                          annulus_inner_mm=0.0,
+                          annulus_outer_mm=self.outline["fs_boss_diameter_mm"])
+
+    # -- records -----------------------------------------------------------------------------
+    def _housing_dims(self) -> dict[str, float]:
+        dims = {"outer_diameter_mm": self.housing_od,
+                "pilot_recess_mm": self.outline["cs_outer_diameter_mm"],
+                "pilot_depth_mm": self.recess_depth, "z_min_mm": -self.recess_depth,
+                "z_max_mm": self.z_out, "overall_length_mm": self.z_out + self.recess_depth,
+                "cavity_diameter_mm": self.cavity_d, "cavity_z0_mm": 0.0,
+                "cavity_z1_mm": self.z_wall, "diaphragm_axial_clearance_mm": self.cavity_beyond,
+                "bearing_seat_mm": self.out_D, "bearing_seat_depth_mm": self.bearing_len,
+                "shaft_hole_mm": self.out_d + 2 * SHAFT_CLEARANCE_MM,
+                "seal_recess_mm": self.out_seal[0], "seal_recess_depth_mm": self.out_seal_depth,
+                "tap_drill_mm": self.cs_tap, "thread_depth_mm": self.cs_depth,
+                "drill_depth_mm": self.cs_drill}
+        for column in ("oil_level_from_axis_mm", "grease_g"):
+            if self.rec.get(column) is not None:
+                dims[column] = self.rec[column]
+        return dims
+
+    def _cover_dims(self) -> dict[str, float]:
+        return {"outer_diameter_mm": self.housing_od,
+                "spigot_diameter_mm": self.outline["cs_outer_diameter_mm"],
+                "spigot_length_mm": SPIGOT_MM, "thickness_mm": self.cover_t,
+                "cavity_diameter_mm": self.cover_cavity_d,
+                "cavity_depth_mm": self.cover_cavity_depth, "bearing_seat_mm": self.in_D,
+                "bearing_seat_depth_mm": self.in_B,
+                "shaft_hole_mm": self.in_d + 2 * SHAFT_CLEARANCE_MM,
+                "seal_recess_mm": self.in_seal[0], "seal_recess_depth_mm": self.in_seal_depth,
+                "clearance_hole_mm": self.clearance, "counterbore_diameter_mm": self.cbore,
+                "counterbore_depth_mm": self.cbore_depth, "input_shaft_mm": self.input_shaft}
+
+    def _flange_dims(self) -> dict[str, float]:
+        boss = self.outline["fs_boss_diameter_mm"]
+        return {"outer_diameter_mm": boss, "flange_diameter_mm": boss,
+                "flange_thickness_mm": self.flange_t, "diaphragm_radius_mm": self.flange_r,
+                "journal_diameter_mm": self.out_d,
+                "overall_length_mm": self.flange_t + self.journal_len,
+                "tap_drill_mm": self.fs_tap, "thread_depth_mm": self.fs_depth,
+                "drill_depth_mm": self.fs_drill}
+
+    def _notes(self) -> list[str]:
+        o, h = self.outline, self.rec
+        return [
+            f"{self.label}: every gear dimension from the overlay tables {OUTLINE} and "
+            f"{HOUSING} (source: {o['source']}); the seeds have no outline or recommended-"
+            "housing table for the component types",
+            f"design guidelines seed 000 p.024: (1) CS pilot recess Ø{o['cs_outer_diameter_mm']:g}"
+            " H7 and all bearing seats turned in the housing and cover that hold it; (4) inner "
+            f"wall Ø{self.cavity_d:g} = max(recommended FS wall Ø{h['fs_wall_diameter_mm']:g}, "
+            f"diaphragm side Ø{h['diaphragm_side_diameter_mm']:g}) + {WALL_ALLOWANCE_MM:g} mm "
+            f"allowance; end wall {self.cavity_beyond:g} mm beyond the FS diaphragm (recommended "
+            f"≥ {h['diaphragm_side_depth_mm']:g}, flange {self.flange_t:g} + running gap "
+            f"{AXIAL_GAP_MM:g}); (5) two output bearings; (6) output flange Ø"
+            f"{o['fs_boss_diameter_mm']:g} = FS boss, radius R{self.flange_r:g} on its "
+            f"diaphragm side; (7) cover cavity Ø{self.cover_cavity_d:g} × "
+            f"{self.cover_cavity_depth:g} clears the C-ring hook (r {o['cring_hook_radius_mm']:g}, "
+            f"{o['cring_protrusion_mm']:g} mm proud of the CS) by ≥ "
+            f"{h['cring_clearance_min_mm']:g} mm + {WALL_ALLOWANCE_MM:g} mm allowance",
+            f"output bearings 2 × {self.out_bearing} (ISO 15 {self.out_d:g}×{self.out_D:g}×"
+            f"{self.out_B:g}; the largest 60xx bore ≤ FS boss − 2 × {FLANGE_STEP_MM:g} mm) in "
+            f"one bore with a spacer of width B (span 2B, not computed from the moment load: check "
+            f"it); outer rings against the shoulder, held on the cavity side and on the journal "
+            f"by circlips or a shaft nut (not modelled); seal ISO 6194-1 / DIN 3760 "
+            f"{self.out_d:g}×{self.out_seal[0]:g}×{self.out_seal[1]:g} from the outer face",
+            f"input shaft Ø{self.input_shaft:g} ({self.input_rule}); bearing {self.in_bearing} "
+            f"(ISO 15 {self.in_d:g}×{self.in_D:g}×{self.in_B:g}, the smallest 60xx bore ≥ the "
+            f"shaft) and seal {self.in_d:g}×{self.in_seal[0]:g}×{self.in_seal[1]:g}; it takes "
+            "the WG thrust (guideline 2, p.027); the second input support (guideline 5) is the "
+            "motor's bearing or the user's — one seat only is modelled",
+            f"CS screws {self.cs_count} × {self.cs_thread} on φ{o['cs_bolt_circle_mm']:g}: from "
+            f"the cover's outer face (clearance Ø{self.clearance:g} ISO 273 medium, counterbore "
+            f"Ø{self.cbore:g} DIN 974-1 × {self.cbore_depth:g}) through the CS holes into the "
+            f"housing, tapped {self.cs_thread} × {self.cs_depth:g} (tap drill Ø{self.cs_tap:g} "
+            f"ISO 2306, drilled {self.cs_drill:g}); the CS is clamped between the housing "
+            "shoulder and the cover spigot; the CS holes must be through holes (check the "
+            "outline drawing)",
+            f"FS screws {self.fs_count} × {self.fs_thread} on φ{o['fs_bolt_circle_mm']:g}: "
+            f"from inside the cup into the output flange, tapped × {self.fs_depth:g} (tap drill "
+            f"Ø{self.fs_tap:g}, drilled {self.fs_drill:g}); thread depth {TAPPED_DEPTH_FACTOR:g}"
+            "·d (design value: the least engagement of an aluminium part)",
+            f"housing Ø{self.housing_od:g} = CS φ + 2 × wall_mm; cover spigot {SPIGOT_MM:g} mm; "
+            f"bolt-circle ligaments ≥ {EDGE_MARGIN_MM:g} mm; output journal sticks out "
+            f"{self.out_d:g} mm (= its diameter) for the user's load",
+        ]
