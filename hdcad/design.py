@@ -46,21 +46,34 @@ def interference_check(pairs: list[tuple[str, str, float]], masses: dict[str, fl
 
 def oil_level_check(model: GearModel, parts: list, duty: Duty, options: DesignOptions,
                     catalog: Catalog) -> CheckResult:
-    """`oil_level` on the generated parts: FD-2 casings hold the oil; other families do not."""
+    """`oil_level` on the generated parts: the FD-2 casings and the 2A-GR housing hold oil."""
     from .checks.oil_level import oil_level
-    from .geometry.oil import fd_casing_cavity, volume_below_mL
-    level = (catalog.datum("fd_oil_level", catalog.find("fd_oil_level", size=model.size), "A_mm")
-             if model.is_fd else None)
-    args = dict(lubrication=duty.lubrication, level_mm=None if level is None else float(level),
-                level_source=level.source if level else "", axis=options.axis,
-                cavity_depth_mm=None, seal_shaft_mm=None, oil_volume_mL=None)
-    if model.family == "FD-2" and level is not None:
-        cavity = fd_casing_cavity(parts)
-        args.update(cavity_depth_mm=cavity.depth_mm, seal_shaft_mm=cavity.seal_shaft_mm,
-                    oil_volume_mL=volume_below_mL(cavity.solid, float(level)),
-                    volume_note=cavity.note,
+    from .geometry import oil
+    level, source = _oil_level(model, catalog)
+    args = dict(lubrication=duty.lubrication, level_mm=level, level_source=source,
+                axis=options.axis, cavity_depth_mm=None, seal_shaft_mm=None,
+                oil_volume_mL=None)
+    cavity = {"FD-2": oil.fd_casing_cavity, "2A-GR": oil.component_set_cavity}.get(model.family)
+    if cavity is not None and level is not None:
+        space = cavity(parts)
+        args.update(cavity_depth_mm=space.depth_mm, seal_shaft_mm=space.seal_shaft_mm,
+                    oil_volume_mL=oil.volume_below_mL(space.solid, level),
+                    volume_note=space.note,
                     plug_radius_mm=parts[0].dimensions.get("oil_plug_radius_mm"))
     return oil_level(**args)
+
+
+def _oil_level(model: GearModel, catalog: Catalog) -> tuple[float | None, str]:
+    """Oil level A [mm below the axis] and its source: FD table 315-1 or the overlay."""
+    if model.is_fd:
+        datum = catalog.datum("fd_oil_level", catalog.find("fd_oil_level", size=model.size),
+                              "A_mm")
+    elif catalog.has("component_housing"):
+        datum = catalog.datum("component_housing", catalog.find(
+            "component_housing", series=model.series, size=model.size), "oil_level_from_axis_mm")
+    else:
+        datum = None
+    return (None, "") if datum is None else (float(datum), datum.source)
 
 
 class _Clock:

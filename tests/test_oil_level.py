@@ -84,3 +84,27 @@ def test_fd_cavity_volume_matches_the_circular_segment_formula(catalog, code):
     # the cavity is empty space: it overlaps no generated part
     for part in parts:
         assert cavity.solid.intersect(part.placed()).Volume() < 1e-3
+
+
+def test_component_set_cavity_is_empty_space_and_holds_the_oil(catalog):
+    pytest.importorskip("cadquery")
+    from pathlib import Path
+    from hdcad.catalog import load_catalog
+    from hdcad.design_options import DesignOptions
+    from hdcad.geometry.build import build_parts
+    from hdcad.geometry.oil import component_set_cavity, volume_below_mL
+    from hdcad.models import resolve
+    # invented test overlay (tests/data/…TEST_DATA_NOT_CATALOG.yaml), not catalog data
+    overlay = load_catalog(Path(__file__).parent / "data" /
+                           "overlay_2a_gr_TEST_DATA_NOT_CATALOG.yaml")
+    parts = build_parts(resolve("CSF-40-120-2A-GR", overlay), overlay, DesignOptions())
+    cavity = component_set_cavity(parts)
+    for part in parts:
+        assert cavity.solid.intersect(part.placed()).Volume() < 1e-3, part.name
+    level = overlay.find("component_housing", series="CSF", size=40)["oil_level_from_axis_mm"]
+    below, total = volume_below_mL(cavity.solid, level), cavity.solid.Volume() / 1000
+    # the surface lies below the axis: less than half of the cavity holds oil, but some does
+    assert 0 < below < total / 2
+    # the level is read against the seal lips of the larger shaft (output journal)
+    housing = next(p for p in parts if p.name == "housing").dimensions
+    assert cavity.seal_shaft_mm == pytest.approx(housing["shaft_hole_mm"] - 2.0)

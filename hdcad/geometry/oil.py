@@ -52,3 +52,34 @@ def volume_below_mL(solid: cq.Shape, level_mm: float) -> float:
     cutter = cq.Solid.makeBox(box.xlen + 2, height, box.zlen + 2,
                               cq.Vector(box.xmin - 1, box.ymin, box.zmin - 1))
     return solid.intersect(cutter).Volume() / 1000.0
+
+
+def component_set_cavity(parts: list[Part]) -> OilCavity:
+    """The space inside a 2A-GR housing and input cover, in assembly coordinates.
+
+    Housing cavity + cover cavity + the circular spline's bore between them (taken at the
+    smaller of the two cavity diameters), less the output flange and the input shaft. The
+    gear's own volume (FS, WG, CS teeth) is not in the overlay tables: the oil volume from
+    this cavity is an upper bound.
+    """
+    by_name = {p.name: p for p in parts}
+    housing, cover = by_name["housing"].dimensions, by_name["input_cover"]
+    cs_face = cover.offset_z_mm  # the cover is flipped: its mating face sits on the CS face
+    d_cover, depth = cover.dimensions["cavity_diameter_mm"], cover.dimensions["cavity_depth_mm"]
+    d_housing = housing["cavity_diameter_mm"]
+    pieces = [_cylinder(d_housing, housing["cavity_z0_mm"], housing["cavity_z1_mm"]),
+              _cylinder(d_cover, cs_face - depth, cs_face),
+              _cylinder(min(d_housing, d_cover), cs_face, 0.0)]
+    shaft = cover.dimensions["shaft_hole_mm"] - 2 * SHAFT_CLEARANCE_MM
+    solid = pieces[0].fuse(*pieces[1:]).cut(
+        by_name["output_flange"].placed(),
+        _cylinder(shaft, cs_face - depth, housing["cavity_z1_mm"])).clean()
+    seal_shaft = max(shaft, housing["shaft_hole_mm"] - 2 * SHAFT_CLEARANCE_MM)
+    return OilCavity(solid, max(d_housing, d_cover) / 2, seal_shaft,
+                     " at most: housing and cover cavities and the circular-spline bore less "
+                     "the output flange and the input shaft; the gear's own volume below the "
+                     "level is not in the overlay tables and is not subtracted")
+
+
+def _cylinder(diameter: float, z0: float, z1: float) -> cq.Shape:
+    return cq.Solid.makeCylinder(diameter / 2, z1 - z0, cq.Vector(0, 0, z0))
