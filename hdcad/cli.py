@@ -13,21 +13,9 @@ from typing import Sequence
 
 from . import __version__
 from .errors import InputError
+from .report.format import check_label, fmt, margin_text, status_text
 
 EXIT_OK, EXIT_FAIL, EXIT_INPUT = 0, 1, 2
-
-
-def fmt(value, digits: int = 4) -> str:
-    """A number for a table: thousands separators above 1000, else 4 significant digits."""
-    if value is None:
-        return "—"
-    if isinstance(value, str):
-        return value
-    if value != value or value in (float("inf"), float("-inf")):
-        return str(value)
-    if abs(value) >= 1000:
-        return f"{value:,.0f}"
-    return f"{value:.{digits}g}"
 
 
 def _table(headers: Sequence[str], rows: Sequence[Sequence[str]]) -> str:
@@ -63,26 +51,19 @@ def _f(datum):
     return None if datum is None else float(datum)
 
 
-def _label(check) -> str:
-    """Check id, with the bolt circle's name where one id has several records."""
-    name = check.details.get("name")
-    return f"{check.id}[{name}]" if name else check.id
-
-
 def print_evaluation(ev) -> None:
     print(f"{ev.model.code}: {ev.model.description}")
     d = ev.derived
     print(f"duty {ev.duty.name}: Tav {fmt(d['avg_torque_Nm'])} N·m, no_av "
           f"{fmt(d['avg_output_speed_rpm'])} r/min, ni_av {fmt(d['avg_input_speed_rpm'])} r/min, "
           f"ni_max {fmt(d['max_input_speed_rpm'])} r/min")
-    rows = [[_label(c),
-             c.status.upper().replace("_", " "), fmt(c.value), c.sense or "",
-             fmt(c.limit), c.unit, "—" if c.margin is None else f"{c.margin:+.0%}"]
+    rows = [[check_label(c.id, c.details), status_text(c.status), fmt(c.value), c.sense or "",
+             fmt(c.limit), c.unit, margin_text(c.margin)]
             for c in ev.checks]
     print(_table(["check", "status", "value", "", "limit", "unit", "margin"], rows))
     for c in ev.checks:
         if c.note:
-            print(f"  {_label(c)}: {c.note}")
+            print(f"  {check_label(c.id, c.details)}: {c.note}")
     print(f"verdict: {ev.verdict} (catalog revision {ev.catalog_revision})")
 
 
@@ -151,6 +132,46 @@ def cmd_design(args) -> int:
     return EXIT_OK if result.evaluation.all_passed else EXIT_FAIL
 
 
+def cmd_reconcile(args) -> int:
+    from .catalog import load_catalog
+    from .models import resolve
+    from .output import json_text, staged_dir, write_text_atomic
+    from .reconcile import read_data, reconcile
+    catalog = load_catalog(args.catalog_overlay)
+    model = resolve(args.model, catalog)
+    if args.kind == "vibration" and args.load_inertia is None:
+        raise InputError("--load-inertia", "vibration needs the load inertia [kg·m²]")
+    data = read_data(args.kind, args.data)
+    result = reconcile(args.kind, data, model, catalog, args.load_inertia)
+    print_reconciliation(result)
+    if args.json:
+        write_text_atomic(args.json, json_text(result.as_dict()))
+    if args.out:
+        from .reconcile.report import write_report
+        with staged_dir(args.out) as folder:
+            files = write_report(result, folder)
+        print(f"wrote {args.out}/: {', '.join(files)}")
+    return EXIT_OK
+
+
+def print_reconciliation(result) -> None:
+    u = result.unit
+    print(f"{result.model} {result.kind}: {len(result.series['measured'])} rows, noise RMS "
+          f"{fmt(result.noise_rms)} {u} (estimated from the data)")
+    for d in result.disagreements:
+        print(f"  disagrees: {d['where']}: RMS {fmt(d['rms'])} {u}")
+    for step in result.steps:
+        params = ", ".join(f"{k} = {fmt(v['value'])} {v['unit']}".rstrip()
+                           for k, v in step.params.items())
+        print(f"  added {step.effect} (ΔBIC {step.criterion_gain:.1f}, RMSE "
+              f"{fmt(step.rmse)} {u}): {params}")
+    gain = 1 - result.rmse_after / result.rmse_before if result.rmse_before else 0.0
+    print(f"missing effects: {', '.join(result.missing_effects) or 'none'}; RMSE "
+          f"{fmt(result.rmse_before)} → {fmt(result.rmse_after)} {u} ({gain:.0%} less)")
+    for text in result.unexplained:
+        print(f"  unexplained: {text}")
+
+
 def _parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(prog="hdcad", description="Design guides for strain wave "
                                      "gears: selection checks, housings, STEP, calc sheets.")
@@ -180,6 +201,16 @@ def _parser() -> argparse.ArgumentParser:
     p.add_argument("--duty", required=True, metavar="FILE", help="duty YAML file")
     p.add_argument("--design", metavar="FILE", help="design options YAML (defaults documented)")
     p.add_argument("--out", required=True, metavar="DIR", help="output folder; writes DIR/MODEL/")
+    p = command("reconcile", cmd_reconcile, "Where measured data and the catalog model "
+                                            "disagree, which effect is missing, and the gap "
+                                            "with it added.")
+    p.add_argument("kind", choices=["torsion", "transmission", "efficiency", "vibration"])
+    p.add_argument("data", metavar="DATA.csv", help="measured data, CSV with a header row")
+    p.add_argument("--model", required=True, help="model code, e.g. CSF-32-100-GH")
+    p.add_argument("--load-inertia", type=float, metavar="KGM2",
+                   help="load inertia [kg·m²] (vibration)")
+    p.add_argument("--json", metavar="FILE", help="also write the result as JSON")
+    p.add_argument("--out", metavar="DIR", help="write plots and report.html/.pdf into DIR")
     return parser
 
 

@@ -1,0 +1,139 @@
+"""Measured data for ``hdcad reconcile``: CSV reading and validation.
+
+Every kind has fixed column names (SI units in the name, issue 5); extra columns are ignored.
+Bad files raise :class:`hdcad.errors.InputError` naming the column and the row, so the command
+line prints one line and exits 2.
+"""
+
+from __future__ import annotations
+
+import csv
+import math
+from pathlib import Path
+
+import numpy as np
+
+from ..errors import InputError
+
+KINDS = ("torsion", "transmission", "efficiency", "vibration")
+COLUMNS = {"torsion": ("torque_Nm", "twist_rad"),
+           "transmission": ("input_angle_rad", "output_angle_rad"),
+           "efficiency": ("input_speed_rpm", "load_torque_Nm", "temperature_C",
+                          "efficiency_pct"),
+           "vibration": ("time_s", "input_speed_rpm", "output_vibration_rad")}
+# Fewest rows per kind. Design choice: the workflow cross-validates on 5 folds of contiguous
+# chunks and fits up to ~8 parameters per model, so every fold must keep several times more
+# rows than parameters; a loop (torsion) or a run-up (vibration) needs enough samples to be
+# resolved at all.
+MIN_ROWS = {"torsion": 100, "transmission": 100, "efficiency": 40, "vibration": 200}
+# Transmission: the 1× and 2× harmonics are separated from each other and from the offset only
+# over whole WG revolutions; one revolution is the least that can name te_1x (seed 000 p.021).
+MIN_WG_REVOLUTIONS = 1.0
+
+
+def check_kind(kind: str) -> str:
+    if kind not in KINDS:
+        raise InputError("kind", f"{kind!r} is not a reconcile kind; allowed: {', '.join(KINDS)}")
+    return kind
+
+
+def read_data(kind: str, path) -> dict[str, np.ndarray]:
+    """The kind's columns of a CSV file with a header row, as float arrays.
+
+    Raises InputError for a missing file or column, a non-numeric or non-finite cell (naming
+    its column and line), too few rows, or values the kind cannot use.
+    """
+    check_kind(kind)
+    path = Path(path)
+    try:
+        with path.open(newline="", encoding="utf-8-sig") as fh:
+            reader = csv.reader(fh)
+            header = [h.strip() for h in next(reader, [])]
+            columns = _column_indices(kind, header, path.name)
+            rows = [row for row in reader if any(cell.strip() for cell in row)]
+    except OSError as exc:
+        raise InputError("DATA.csv", f"cannot read {path}: {exc.strerror or exc}") from None
+    except (UnicodeDecodeError, csv.Error) as exc:
+        raise InputError("DATA.csv", f"{path.name} is not a CSV text file ({exc})") from None
+    return validate_data(kind, _parse(rows, columns, path.name))
+
+
+def _column_indices(kind: str, header: list[str], name: str) -> dict[str, int]:
+    if not header:
+        raise InputError("DATA.csv", f"{name} is empty; expected a header row with "
+                                     f"{', '.join(COLUMNS[kind])}")
+    missing = [c for c in COLUMNS[kind] if c not in header]
+    if missing:
+        raise InputError(missing[0], f"column missing from {name}; {kind} needs "
+                                     f"{', '.join(COLUMNS[kind])}")
+    return {c: header.index(c) for c in COLUMNS[kind]}
+
+
+def _parse(rows: list[list[str]], columns: dict[str, int], name: str) -> dict[str, np.ndarray]:
+    out = {c: np.empty(len(rows)) for c in columns}
+    for line, row in enumerate(rows, start=2):  # line 1 is the header
+        for column, index in columns.items():
+            text = row[index].strip() if index < len(row) else ""
+            try:
+                out[column][line - 2] = float(text)
+            except ValueError:
+                raise InputError(column, f"{name} line {line}: {text!r} is not a number") from None
+    return out
+
+
+def validate_data(kind: str, data: dict) -> dict[str, np.ndarray]:
+    """The same checks as :func:`read_data` for in-memory columns; returns float arrays."""
+    check_kind(kind)
+    missing = [c for c in COLUMNS[kind] if c not in data]
+    if missing:
+        raise InputError(missing[0], f"column missing; {kind} needs {', '.join(COLUMNS[kind])}")
+    try:
+        out = {c: np.asarray(data[c], dtype=float).ravel() for c in COLUMNS[kind]}
+    except (TypeError, ValueError):
+        raise InputError(kind, "columns must hold numbers") from None
+    lengths = {len(v) for v in out.values()}
+    if len(lengths) != 1:
+        raise InputError(kind, "columns have different lengths")
+    n = lengths.pop()
+    for column, values in out.items():
+        bad = np.flatnonzero(~np.isfinite(values))
+        if bad.size:
+            raise InputError(column, f"row {bad[0] + 1}: {values[bad[0]]} is not a finite "
+                                     "number")
+    if n < MIN_ROWS[kind]:
+        raise InputError(kind, f"{n} rows; {kind} needs at least {MIN_ROWS[kind]}")
+    _KIND_CHECKS[kind](out)
+    return out
+
+
+def _check_torsion(d: dict[str, np.ndarray]) -> None:
+    if np.ptp(d["torque_Nm"]) <= 0:
+        raise InputError("torque_Nm", "torque is constant; torsion needs loading cycles")
+
+
+def _check_transmission(d: dict[str, np.ndarray]) -> None:
+    turns = np.ptp(d["input_angle_rad"]) / (2 * math.pi)
+    if turns < MIN_WG_REVOLUTIONS:
+        raise InputError("input_angle_rad", f"spans {turns:.2f} WG revolutions; transmission "
+                                            f"needs at least {MIN_WG_REVOLUTIONS:g}")
+
+
+def _check_efficiency(d: dict[str, np.ndarray]) -> None:
+    eta = d["efficiency_pct"]
+    if eta.min() < 0 or eta.max() > 100:
+        raise InputError("efficiency_pct", "must lie in 0…100 %")
+    if (d["load_torque_Nm"] <= 0).any():
+        raise InputError("load_torque_Nm", "must be > 0 (efficiency under load)")
+
+
+def _check_vibration(d: dict[str, np.ndarray]) -> None:
+    dt = np.diff(d["time_s"])
+    if (dt <= 0).any():
+        row = int(np.flatnonzero(dt <= 0)[0]) + 2
+        raise InputError("time_s", f"row {row}: time must increase strictly")
+    if (d["input_speed_rpm"] < 0).any():
+        raise InputError("input_speed_rpm", "must be ≥ 0 (a run-up)")
+
+
+_KIND_CHECKS = {"torsion": _check_torsion, "transmission": _check_transmission,
+                "efficiency": _check_efficiency, "vibration": _check_vibration}

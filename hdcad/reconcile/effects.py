@@ -1,0 +1,404 @@
+"""The library of physical effects a catalog model may be missing.
+
+Each effect is a frozen :class:`Effect`: its name (the JSON name), a physical description
+citing the seed page, the parametric form, its parameters with units and bounds, and the
+measurement kinds it applies to. The forms are plain functions below; the workflow turns them
+into design-matrix columns (:func:`columns`): parameters that enter linearly (amplitudes) are
+solved by linear least squares, the others (shapes, widths, damping) by
+``scipy.optimize.least_squares``.
+
+Bounds are written as multiples of a *scale*: a catalog figure where the catalog has one
+(hysteresis loss, backlash, accuracy: tables 052/060, 052-2/060-2, 051-1/059-1; FD lost motion
+314-1) or a range of the data (the largest torque T0 of a torsion test). Where the catalog
+lacks the figure, the workflow substitutes a data-based scale and says so.
+
+References
+----------
+Seed 000 p.020: torque-twist curve; hysteresis loss (B−B′ after loading to rated torque and
+back to zero; caused by internal friction, so almost none at very small torque); backlash
+(the clearance of the wave generator's Oldham coupling; the tooth mesh has none); the twist
+of the component alone excludes output shafts and housing.
+Seed 000 p.021: angular transmission error θer = θ2 − θ1/R, mainly two cycles per WG
+revolution; it appears as torsional vibration of the load and resonates when 2·f_input = f_n,
+f_n = (1/2π)·√(K/J).
+Seed 000 p.023: efficiency depends on ratio, input speed, load torque, temperature and
+lubrication; below rated torque η = Ke·ηR, α = T/Tr, Ke = 1 for α ≥ 1 (graph 023-1; one point
+survives: α = 0.58 → Ke = 0.93).
+Bouc, R. (1971); Wen, Y.-K. (1976) "Method for random vibration of hysteretic systems",
+J. Eng. Mech. 102(2): the hysteresis form below is their first-order (n = 1) model.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from scipy import signal
+
+# Reference lubricant temperature of the efficiency model: the seed's efficiency example
+# (000 p.023, CSF-20-80) is at 20 °C; η0 is the efficiency there.
+REFERENCE_TEMPERATURE_C = 20.0
+# Torque reversals smaller than this fraction of the torque range are noise, not a new
+# loading branch (design choice: a quasi-static rig's torque signal is smooth; 2 % ignores
+# measurement ripple while any real reversal of the cycle is far larger).
+TURN_FRACTION = 0.02
+
+
+@dataclass(frozen=True)
+class Parameter:
+    """One effect parameter: bounds are ``lower·scale … upper·scale`` in ``unit``."""
+
+    name: str
+    unit: str
+    description: str
+    lower: float
+    upper: float
+    scale: str = "1"       # context key: a catalog figure or a data range ('1' = absolute)
+    linear: bool = False   # solved by linear least squares (an amplitude)
+
+
+@dataclass(frozen=True)
+class Effect:
+    """A physical effect the catalog model may miss."""
+
+    name: str
+    description: str
+    form: str
+    parameters: tuple[Parameter, ...]
+    kinds: tuple[str, ...]
+
+    @property
+    def nonlinear(self) -> tuple[Parameter, ...]:
+        return tuple(p for p in self.parameters if not p.linear)
+
+
+# --------------------------------------------------------------------------- forms
+def turning_points(x: np.ndarray, threshold: float) -> tuple[np.ndarray, int]:
+    """Indices where a quasi-static signal reverses by more than ``threshold``.
+
+    Returns (branch start indices, direction of the first branch ±1). A branch starts at the
+    extreme sample of the reversal.
+    """
+    values = x.tolist()
+    start, direction, ext_i = [0], 0, 0
+    first = 0
+    for i in range(1, len(values)):
+        v = values[i]
+        if direction == 0:
+            if abs(v - values[0]) >= threshold:
+                direction = first = 1 if v > values[0] else -1
+                ext_i = i
+        elif (v - values[ext_i]) * direction > 0:
+            ext_i = i
+        elif (values[ext_i] - v) * direction >= threshold:
+            start.append(ext_i)
+            direction, ext_i = -direction, i
+    return np.asarray(start), first or 1
+
+
+def _bouc_wen_table(rho: float, n: float) -> tuple[np.ndarray, np.ndarray]:
+    """(G, w): G(w) = ∫₀^w dw'/f(w') of the normalised Bouc–Wen branch, increasing in w.
+
+    f(w) = 1 − wⁿ for w ≥ 0 (towards saturation) and 1 + ρ·|w|ⁿ for w < 0. The positive side
+    is tabulated in s = −ln(1 − w), where the integrand e^(−s)/f stays finite (→ 1/n).
+    """
+    w_neg = np.linspace(-1.0, 0.0, 401)
+    g_neg = _cumtrapz(1.0 / (1.0 + rho * np.abs(w_neg[::-1]) ** n), w_neg[::-1])
+    s = np.linspace(0.0, 30.0, 1501)
+    w_pos = -np.expm1(-s)
+    # 1 − wⁿ with w = 1 − e^(−s), written to stay accurate as w → 1
+    f_pos = -np.expm1(n * np.log1p(-np.exp(-s[1:])))
+    integrand = np.concatenate([[1.0], np.exp(-s[1:]) / f_pos])
+    g_pos = _cumtrapz(integrand, s)
+    return (np.concatenate([g_neg[::-1][:-1], g_pos]),
+            np.concatenate([w_neg[:-1], w_pos]))
+
+
+def _cumtrapz(y: np.ndarray, x: np.ndarray) -> np.ndarray:
+    return np.concatenate([[0.0], np.cumsum(0.5 * (y[1:] + y[:-1]) * np.diff(x))])
+
+
+def _bouc_wen_branch(v: np.ndarray, w0: float, table) -> np.ndarray:
+    """Normalised state w along one branch from w0; v ≥ 0 torque travelled / T_s.
+
+    dw/dv = f(w) is autonomous, so w(v) = G⁻¹(G(w0) + v).
+    """
+    g, w = table
+    return np.interp(np.interp(w0, w, g) + v, g, w)
+
+
+def hysteresis_state(torque_Nm: np.ndarray, T_s: float, rho: float, n: float = 1.0,
+                     branches: tuple[np.ndarray, int] | None = None) -> np.ndarray:
+    """Hysteretic twist z [rad per rad of z_sat] along a torque history T [N·m].
+
+    Bouc–Wen model written as a function of torque, normalised so that z saturates at ±1:
+    dz/dT = (1/T_s)·[1 − |z|ⁿ·(β·sgn(dT·z) + γ)], β + γ = 1, ρ = β − γ. z rises towards
+    +1 on loading and falls towards −1 on unloading over a torque scale T_s; n sets how
+    sharply it saturates; ρ = 1, n = 1 is Dahl's friction model (a Masing loop with an
+    exponential backbone), ρ = 0 unloads linearly until z changes sign. Starts from z = 0
+    (virgin state). Friction makes the twist lag the torque (smaller on loading than on
+    unloading, so the loop absorbs energy and a positive twist B remains after unloading from
+    +T, seed 000 p.020): the twist contribution is −z_sat·z. Each loading branch (between
+    turning points) is solved exactly by quadrature of the autonomous branch equation.
+    """
+    if branches is None:
+        branches = turning_points(torque_Nm, TURN_FRACTION * np.ptp(torque_Nm))
+    table = _bouc_wen_table(rho, n)
+    starts, direction = branches
+    z = np.empty_like(torque_Nm, dtype=float)
+    bounds = list(starts) + [len(torque_Nm)]
+    z0 = 0.0
+    for s, e in zip(bounds[:-1], bounds[1:]):
+        seg = torque_Nm[s:e + 1] if e < len(torque_Nm) else torque_Nm[s:e]
+        travel = direction * (seg - seg[0])
+        v = np.maximum.accumulate(np.maximum(travel, 0.0)) / T_s
+        w = _bouc_wen_branch(v, direction * z0, table)
+        z[s:e] = direction * w[:e - s]
+        z0 = direction * w[-1]
+        direction = -direction
+    return z
+
+
+def hysteresis_loss(z_sat_rad: float, T_s: float, rho: float, n: float, T0: float) -> float:
+    """Loop width at zero torque B − B′ [rad] of steady cycles between ±T0 [N·m].
+
+    B is the twist left at zero torque after unloading from +T0, B′ after unloading from −T0,
+    for the twist θ_catalog(T) − z_sat·z; positive for a friction loop. The catalog's
+    hysteresis loss (seed 000 p.020) is this width for T0 = rated torque.
+    """
+    table = _bouc_wen_table(rho, n)
+    w0 = -1.0
+    v = np.array([T0 / T_s, 2.0 * T0 / T_s])
+    for _ in range(500):
+        w = _bouc_wen_branch(v, w0, table)
+        if abs(-w[1] - w0) < 1e-12:
+            break
+        w0 = -w[1]
+    return 2.0 * z_sat_rad * float(w[0])
+
+
+def backlash_twist(torque_Nm: np.ndarray, lost_motion_rad: float, width_Nm: float) -> np.ndarray:
+    """Lost motion around zero torque [rad]: (b/2)·tanh(T/T_w).
+
+    A clearance b lets the output move b with (almost) no torque; seen as twist against
+    torque it is a step of height b at T = 0, smoothed over a torque width T_w (the contact
+    closes gradually). Odd and single-valued in T: unlike hysteresis, it does not depend on
+    the direction of loading.
+    """
+    return 0.5 * lost_motion_rad * np.tanh(torque_Nm / width_Nm)
+
+
+def compliance_twist(torque_Nm: np.ndarray, stiffness_Nm_per_rad: float) -> np.ndarray:
+    """Twist of an extra spring in series [rad]: T/K_h (housing, shafts, fixtures)."""
+    return torque_Nm / stiffness_Nm_per_rad
+
+
+def harmonic_error(wg_angle_rad: np.ndarray, order: int, amplitude_rad: float,
+                   phase_rad: float) -> np.ndarray:
+    """Transmission error at the output [rad]: a·sin(k·φ + p), k cycles per WG revolution."""
+    return amplitude_rad * np.sin(order * wg_angle_rad + phase_rad)
+
+
+def joint_response(time_s: np.ndarray, excitation_rad: np.ndarray, K_Nm_per_rad: float,
+                   J_kgm2: float, zeta: float) -> np.ndarray:
+    """Load angle θ [rad] of J·θ'' + c·θ' + K·θ = K·e(t), c = 2ζ·√(K·J).
+
+    The load starts at rest in static equilibrium, θ(0) = e(0), θ'(0) = 0 (a run-up from
+    standstill). Exact discretisation of the linear joint with e(t) linear between samples
+    (first-order hold): a fixed IIR filter when the samples are evenly spaced
+    (:func:`joint_filter`), the same modal recursion step by step otherwise. 0 ≤ ζ < 1.
+    """
+    wn = math.sqrt(K_Nm_per_rad / J_kgm2)
+    dt = np.diff(time_s)
+    if dt.size and np.ptp(dt) <= 1e-6 * dt.mean():
+        b, a = joint_filter(wn, zeta, float(dt.mean()))
+        zi = signal.lfilter_zi(b, a) * excitation_rad[0]  # steady state of a constant input
+        return signal.lfilter(b, a, excitation_rad, zi=zi)[0]
+    return _joint_uneven(dt, np.asarray(excitation_rad, dtype=float), wn, zeta)
+
+
+def _modes(wn: float, zeta: float):
+    """Eigenvalues λ, eigenvectors V (columns [1, λ]) and V⁻¹ of the joint's state matrix."""
+    wd = wn * math.sqrt(1.0 - zeta * zeta)
+    lam = np.array([-zeta * wn + 1j * wd, -zeta * wn - 1j * wd])
+    V = np.array([[1.0, 1.0], lam])
+    return lam, V, np.linalg.inv(V)
+
+
+def _joint_uneven(dt: np.ndarray, e: np.ndarray, wn: float, zeta: float) -> np.ndarray:
+    """Modal first-order-hold recursion with a step of its own per sample interval."""
+    lam, V, Vinv = _modes(wn, zeta)
+    beta = (Vinv @ np.array([0.0, wn * wn]))[0]          # first mode; the second is its conjugate
+    lam0 = lam[0]
+    a = np.exp(lam0 * dt)
+    g0 = (a - 1.0) / lam0
+    g1 = (a - 1.0 - lam0 * dt) / (lam0 * lam0 * dt)
+    b_now, b_next = (g0 - g1) * beta, g1 * beta
+    q = (Vinv @ np.array([e[0], 0.0]))[0]               # static equilibrium θ = e, θ' = 0
+    out = np.empty(len(e))
+    out[0] = 2.0 * q.real
+    for k in range(len(dt)):
+        q = a[k] * q + b_now[k] * e[k] + b_next[k] * e[k + 1]
+        out[k + 1] = 2.0 * q.real                         # θ = q + conj(q)
+    return out
+
+
+def joint_filter(wn: float, zeta: float, dt: float) -> tuple[np.ndarray, np.ndarray]:
+    """IIR coefficients (b, a) of θ'' + 2ζω·θ' + ω²·θ = ω²·e sampled every dt [s], e linear
+    between samples (first-order hold), 0 ≤ ζ < 1.
+
+    Modal form: A = V·Λ·V⁻¹ with λ = −ζω ± iω√(1 − ζ²); x[k+1] = Φ·x[k] + (M0 − M1)·e[k] +
+    M1·e[k+1] with Φ = e^(AΔ), M0 = ∫₀^Δ e^(Aτ)dτ·B, M1 = ∫₀^Δ e^(A(Δ−s))·s/Δ ds·B, all
+    diagonal in the modes (closed form, no matrix exponential).
+    """
+    lam, V, Vinv = _modes(wn, zeta)
+    B = np.array([0.0, wn * wn])
+    e = np.exp(lam * dt)
+    modal = lambda d: (V @ np.diag(d) @ Vinv).real
+    phi = modal(e)
+    m0 = modal((e - 1.0) / lam) @ B
+    m1 = modal((e - 1.0 - lam * dt) / (lam * lam * dt)) @ B
+    # ξ = x − M1·e removes the e[k+1] term: ξ[k+1] = Φξ[k] + (ΦM1 + M0 − M1)e[k],
+    # θ[k] = ξ₀[k] + M1₀·e[k]
+    bd = phi @ m1 + m0 - m1
+    a = np.array([1.0, -np.trace(phi), np.linalg.det(phi)])
+    # C·adj(zI − Φ)·bd/det + D with C = [1, 0], D = M1₀: first row of the adjugate is
+    # [z − Φ₁₁, Φ₀₁]
+    n1 = bd[0]
+    n2 = phi[0, 1] * bd[1] - phi[1, 1] * bd[0]
+    d0 = m1[0]
+    b = np.array([d0, n1 + d0 * a[1], n2 + d0 * a[2]])
+    return b, a
+
+
+def low_load_factor(alpha: np.ndarray, c: float, q: float) -> np.ndarray:
+    """Efficiency correction Ke(α) [-] for α = T/Tr < 1; Ke = 1 for α ≥ 1.
+
+    Ke = (α·(1 + c)/(α + c))^q: a load-independent loss (no-load running torque, seed 000
+    p.023) that is the fraction c of the rated output power makes η fall as α/(α + c); the
+    exponent q shapes the curve. Ke(1) = 1, Ke → 0 as α → 0.
+    """
+    a = np.minimum(np.asarray(alpha, dtype=float), 1.0)
+    return (a * (1.0 + c) / (a + c)) ** q
+
+
+def temperature_factor(temperature_C: np.ndarray, share: float, slope_per_K: float,
+                       reference_C: float) -> np.ndarray:
+    """Efficiency relative to that at ``reference_C`` [-] when part of the loss is viscous.
+
+    F = 1 / (1 + a·(e^(−b·(t − t_ref)) − 1)): the lubricant's viscosity falls exponentially
+    with temperature (Reynolds' viscosity law) and the churning loss with it, so a warmer
+    gear is more efficient for a > 0; a is the viscous loss as a share of the input power at
+    t_ref, b the viscosity's temperature coefficient (seed 000 p.023 lists temperature among
+    the factors of efficiency).
+    """
+    t = np.asarray(temperature_C, dtype=float)
+    return 1.0 / (1.0 + share * np.expm1(-slope_per_K * (t - reference_C)))
+
+
+# --------------------------------------------------------------------------- library
+_TE_FORM = ("e(φ) = a·sin({k}·φ + p), φ = WG (input) angle; transmission: output = "
+            "input/R + e; vibration: J·θ'' + c·θ' + K·θ = K·e(t), c = 2ζ√(KJ)")
+
+
+def _te(order: int, what: str) -> Effect:
+    return Effect(
+        name=f"te_{order}x",
+        description=(f"Angular transmission error {order} time(s) per wave-generator revolution "
+                     f"({what}); seed 000 p.021 (formula 021-1 θer = θ2 − θ1/R; the error "
+                     "appears as torsional vibration of the load and resonates at N = "
+                     f"f_n·60/{order})."),
+        form=_TE_FORM.format(k=order),
+        parameters=(
+            Parameter("amplitude", "rad", "amplitude a of the output error", 0.0, 20.0,
+                      "accuracy_rad", linear=True),
+            Parameter("phase", "rad", "phase p at φ = 0", -math.pi, math.pi, linear=True),
+            Parameter("damping_ratio", "-", "damping ratio ζ of the joint (vibration only)",
+                      0.002, 0.5),
+        ),
+        kinds=("transmission", "vibration"))
+
+
+EFFECTS: dict[str, Effect] = {e.name: e for e in (
+    Effect(
+        name="hysteresis",
+        description=("Hysteresis loss: after loading to rated torque and back to zero the "
+                     "twist does not return to zero (B−B′); internal friction makes the twist "
+                     "depend on the loading direction, a loop (seed 000 p.020; figures seed "
+                     "003 p.052/p.060)."),
+        form="θ = θ_catalog(T) − z_sat·z(T history; T_s, ρ, n)  (Bouc–Wen in torque)",
+        parameters=(
+            Parameter("z_sat", "rad", "saturation of the hysteretic twist", 0.0, 20.0,
+                      "hysteresis_rad", linear=True),
+            Parameter("T_s", "N·m", "torque over which the loop saturates", 0.01, 1.0, "T0"),
+            Parameter("rho", "-", "branch shape (1 = Dahl/Masing, 0 = linear unloading)",
+                      -0.9, 3.0),
+            Parameter("n", "-", "sharpness of the saturation", 0.5, 4.0),
+        ),
+        kinds=("torsion",)),
+    Effect(
+        name="backlash",
+        description=("Lost motion around zero torque: the clearance of the wave generator's "
+                     "Oldham coupling (the tooth mesh has none), measured at the output with "
+                     "the input locked (seed 000 p.020; table 052-2/060-2; FD 314-1)."),
+        form="θ = θ_catalog(T) + (b/2)·tanh(T/T_w)",
+        parameters=(
+            Parameter("lost_motion", "rad", "lost motion b", 0.0, 20.0, "backlash_rad",
+                      linear=True),
+            Parameter("T_w", "N·m", "torque width of the transition", 0.002, 0.3, "T0"),
+        ),
+        kinds=("torsion",)),
+    Effect(
+        name="housing_compliance",
+        description=("An extra spring in series (housing, shafts, fixture): the catalog twist "
+                     "is of the component alone and excludes output shafts (seed 000 p.020), so "
+                     "the measured twist is larger than the catalog stiffness gives."),
+        form="θ = θ_catalog(T) + T/K_h",
+        parameters=(
+            Parameter("compliance", "rad/(N·m)", "1/K_h", 0.0, 10.0, "1/K1", linear=True),
+        ),
+        kinds=("torsion",)),
+    _te(1, "eccentricity of the wave generator or the output"),
+    _te(2, "the wave generator's ellipse: the main component"),
+    Effect(
+        name="low_load_efficiency",
+        description=("Efficiency falls when the load torque is below rated: η = Ke·ηR, "
+                     "α = T/Tr, Ke = 1 for α ≥ 1 (seed 000 p.023, graph 023-1: α = 0.58 → "
+                     "Ke = 0.93)."),
+        form="η = Ke(α)·η0, Ke = (α(1 + c)/(α + c))^q for α < 1, 1 above",
+        parameters=(
+            Parameter("c", "-", "load-independent loss as a fraction of rated power",
+                      1e-4, 3.0),
+            Parameter("q", "-", "shape exponent", 0.2, 5.0),
+        ),
+        kinds=("efficiency",)),
+    Effect(
+        name="temperature_dependence",
+        description=("Efficiency changes with the lubricant temperature through the "
+                     "viscosity of the grease or oil (seed 000 p.023 lists temperature among "
+                     "the factors; its example is at 20 °C lubricant temperature)."),
+        form="η = η0·Ke(α)/(1 + a·(exp(−b·(t − 20 °C)) − 1))",
+        parameters=(
+            Parameter("a", "-", "viscous loss / input power at 20 °C (negative: efficiency "
+                      "falls as the gear warms)", -0.5, 0.9),
+            Parameter("b", "1/K", "temperature coefficient of the viscosity", 0.002, 0.2),
+        ),
+        kinds=("efficiency",)),
+)}
+
+EFFECT_NAMES = ("hysteresis", "backlash", "housing_compliance", "te_1x", "te_2x",
+                "low_load_efficiency", "temperature_dependence")
+
+
+def applicable(kind: str) -> tuple[str, ...]:
+    """Names of the effects that apply to ``kind``, in library order."""
+    return tuple(n for n, e in EFFECTS.items() if kind in e.kinds)
+
+
+def nonlinear_parameters(name: str, kind: str) -> tuple[Parameter, ...]:
+    """The effect's parameters fitted by nonlinear least squares for this kind."""
+    params = EFFECTS[name].nonlinear
+    if name.startswith("te_") and kind != "vibration":
+        return ()
+    return params

@@ -1,0 +1,221 @@
+"""Properties of the reconcile effect library, noise estimator and baseline (issue 5).
+
+Each test checks a physical property stated in the seeds or a closed-form result of the
+model's own physics (Dahl's friction model, the linear joint's frequency response), not a
+copy of the implementation.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from hdcad.checks.run import stiffness_curve
+from hdcad.checks.stiffness import natural_frequency, resonant_input_speed
+from hdcad.models import resolve
+from hdcad.reconcile import EFFECT_NAMES, EFFECTS, KINDS
+from hdcad.reconcile import effects as fx
+from hdcad.reconcile.baseline import twist_of
+from hdcad.reconcile.noise import correlation_time, noise_rms
+
+
+def triangle(t0: float, cycles: int, rows: int) -> np.ndarray:
+    """Quasi-static torque 0 → +T0 → −T0 … → 0 [N·m], evenly sampled along the path."""
+    turns = [0.0, t0] + [-t0, t0] * cycles + [0.0]
+    length = np.concatenate([[0.0], np.cumsum(np.abs(np.diff(turns)))])
+    return np.interp(np.linspace(0.0, length[-1], rows), length, turns)
+
+
+def zero_crossing_width(torque: np.ndarray, twist: np.ndarray) -> float:
+    """B − B′ of the last full cycle: twist at T = 0 after unloading from +T0 minus after
+    unloading from −T0, by linear interpolation between samples."""
+    down, up = [], []
+    for i in range(len(torque) - 1):
+        a, b = torque[i], torque[i + 1]
+        if a > 0 >= b:
+            down.append(twist[i] + (twist[i + 1] - twist[i]) * a / (a - b))
+        elif a < 0 <= b:
+            up.append(twist[i] + (twist[i + 1] - twist[i]) * a / (a - b))
+    return down[-1] - up[-1]
+
+
+# --------------------------------------------------------------------------- library
+def test_library_has_the_issue_effects_with_sources_units_bounds_and_kinds():
+    assert set(EFFECT_NAMES) <= set(EFFECTS)
+    for name in EFFECT_NAMES:
+        effect = EFFECTS[name]
+        assert "seed 000 p.02" in effect.description, name   # pages 020/021/023
+        assert effect.form and effect.kinds and set(effect.kinds) <= set(KINDS)
+        for p in effect.parameters:
+            assert p.unit and p.lower < p.upper, (name, p.name)
+    # the kinds the issue names for each effect
+    assert fx.applicable("torsion") == ("hysteresis", "backlash", "housing_compliance")
+    assert set(fx.applicable("transmission")) == {"te_1x", "te_2x"}
+    assert set(fx.applicable("vibration")) == {"te_1x", "te_2x"}
+    assert set(fx.applicable("efficiency")) == {"low_load_efficiency", "temperature_dependence"}
+
+
+# --------------------------------------------------------------------------- hysteresis
+@pytest.mark.parametrize("t_s", [10.0, 30.0, 80.0])
+def test_dahl_loop_width_matches_the_closed_form(t_s):
+    """ρ = 1, n = 1 is Dahl's model dz/dT = (1 − z·sgn(dT))/T_s. Its steady ±T0 loop has the
+    end state z_e = tanh(a), a = T0/T_s, and at T = 0 on the rising branch
+    z = 1 − (1 + tanh a)·e^(−a); B − B′ = 2·z_sat·that (solved by hand from the ODE)."""
+    t0, z_sat = 100.0, 2.9e-4             # gh_hysteresis CSF-GH ratio ≥ 80: 2.9×10⁻⁴ rad
+    a = t0 / t_s
+    expected = 2 * z_sat * (1 - (1 + math.tanh(a)) * math.exp(-a))
+    assert fx.hysteresis_loss(z_sat, t_s, 1.0, 1.0, t0) == pytest.approx(expected, rel=1e-4)
+
+
+@pytest.mark.parametrize("rho,n", [(0.0, 1.0), (0.6, 2.0), (1.0, 1.5)])
+def test_stated_loss_equals_the_width_of_the_simulated_loop(rho, n):
+    """The loss reported for a fit is the zero-torque width of the loop the form draws."""
+    t0, t_s, z_sat = 120.0, 20.0, 1.5e-4
+    torque = triangle(t0, 3, 12001)
+    twist = -z_sat * fx.hysteresis_state(torque, t_s, rho, n)
+    width = zero_crossing_width(torque, twist)
+    assert width == pytest.approx(fx.hysteresis_loss(z_sat, t_s, rho, n, t0), rel=2e-3)
+
+
+def test_hysteresis_loop_absorbs_energy_and_leaves_positive_twist_after_loading():
+    """Seed 000 p.020: after loading to +T and back to zero a positive twist B remains; a
+    friction loop dissipates energy: ∮T·dθ > 0 over a cycle."""
+    torque = triangle(100.0, 2, 8001)
+    twist = -1e-4 * fx.hysteresis_state(torque, 15.0, 0.7, 1.5)
+    assert zero_crossing_width(torque, twist) > 0
+    cycle = slice(len(torque) // 2 - 2000, len(torque) // 2 + 2000)  # one full cycle
+    work = np.sum(0.5 * (torque[cycle][1:] + torque[cycle][:-1]) * np.diff(twist[cycle]))
+    assert work > 0
+
+
+def test_hysteresis_is_small_for_small_torque():
+    """Seed 000 p.020: hysteresis loss is almost nil at very small torque."""
+    big = fx.hysteresis_loss(1.0, 20.0, 0.5, 1.5, 100.0)
+    small = fx.hysteresis_loss(1.0, 20.0, 0.5, 1.5, 1.0)
+    assert small < 0.1 * big
+
+
+# --------------------------------------------------------------------------- backlash etc.
+def test_backlash_lost_motion_equals_its_parameter_and_is_direction_free():
+    b, t_w = 4.4e-5, 0.5                  # gh_backlash CSF-GH 32/100: 4.4×10⁻⁵ rad
+    far = fx.backlash_twist(np.array([-100.0, 100.0]), b, t_w)
+    assert far[1] - far[0] == pytest.approx(b, rel=1e-9)
+    t = np.linspace(-5, 5, 101)
+    theta = fx.backlash_twist(t, b, t_w)
+    np.testing.assert_allclose(theta, -theta[::-1])          # odd: no loading direction
+    assert fx.backlash_twist(np.array([0.0]), b, t_w)[0] == 0.0
+    assert np.all(np.diff(theta) > 0)
+
+
+def test_housing_compliance_is_a_spring_in_series():
+    """An extra spring K_h in series with the gear's spring K: 1/K_total = 1/K + 1/K_h."""
+    k, k_h = 148300.0, 5.0e5                # FD-32 spring constant (table 314-1)
+    t = np.linspace(-150, 150, 7)
+    total = t / k + fx.compliance_twist(t, k_h)
+    np.testing.assert_allclose(total, t / (1 / (1 / k + 1 / k_h)), rtol=1e-12)
+
+
+def test_te_2x_has_period_pi_and_te_1x_period_two_pi():
+    """Seed 000 p.021: the main error component repeats twice per WG revolution."""
+    phi = np.linspace(0, 4 * math.pi, 1001)
+    two = fx.harmonic_error(phi, 2, 1e-4, 0.3)
+    np.testing.assert_allclose(fx.harmonic_error(phi + math.pi, 2, 1e-4, 0.3), two, atol=1e-15)
+    one = fx.harmonic_error(phi, 1, 1e-4, 0.3)
+    assert np.max(np.abs(fx.harmonic_error(phi + math.pi, 1, 1e-4, 0.3) - one)) > 1e-4
+    np.testing.assert_allclose(fx.harmonic_error(phi + 2 * math.pi, 1, 1e-4, 0.3), one,
+                               atol=1e-15)
+
+
+# --------------------------------------------------------------------------- vibration
+@pytest.mark.parametrize("ratio_to_fn", [0.3, 0.9, 1.0, 1.5])
+def test_joint_steady_amplitude_is_the_sdof_frequency_response(ratio_to_fn):
+    """|θ/e| = 1/√((1 − r²)² + (2ζr)²) for J·θ'' + c·θ' + Kθ = K·e (textbook SDOF)."""
+    k, j, zeta = 67000.0, 5.0, 0.05           # K1 of CSF-32-100-GH (table 060-1)
+    fn = math.sqrt(k / j) / (2 * math.pi)
+    f = ratio_to_fn * fn
+    t = np.arange(0, 60 / (zeta * fn), 1 / (40 * max(f, fn)))   # ≫ decay time 1/(ζ·ω)
+    theta = fx.joint_response(t, np.sin(2 * math.pi * f * t), k, j, zeta)
+    tail = theta[len(t) * 3 // 4:]
+    amplitude = 0.5 * (tail.max() - tail.min())
+    r = ratio_to_fn
+    assert amplitude == pytest.approx(1 / math.hypot(1 - r * r, 2 * zeta * r), rel=0.01)
+
+
+def test_joint_starts_in_static_equilibrium_and_both_solvers_agree():
+    k, j, zeta = 67000.0, 5.0, 0.05
+    t = np.linspace(0, 2.0, 4001)
+    e = 1e-4 * np.sin(2 * math.pi * 3.0 * t + 1.0)
+    even = fx.joint_response(t, e, k, j, zeta)
+    assert even[0] == pytest.approx(e[0], rel=1e-9)
+    uneven_t = t.copy()
+    uneven_t[1:-1] += 1e-5 * np.sin(np.arange(1, len(t) - 1))  # forces the lsim path
+    uneven = fx.joint_response(uneven_t, e, k, j, zeta)
+    assert np.max(np.abs(uneven - even)) < 0.01 * np.max(np.abs(even))
+
+
+def test_te_2x_resonates_at_the_seed_input_speed():
+    """Seed 000 p.021: f = 15 Hz resonates at N = 15/2·60 = 450 r/min input speed."""
+    k = 67000.0
+    j = k / (2 * math.pi * 15.0) ** 2
+    assert resonant_input_speed(natural_frequency(k, j)) == pytest.approx(450.0)
+    speeds = np.arange(350.0, 551.0, 10.0)
+    amplitudes = []
+    for n in speeds:
+        t = np.arange(0, 4.0, 1e-3)
+        phi = 2 * math.pi * n / 60 * t
+        theta = fx.joint_response(t, fx.harmonic_error(phi, 2, 1.0, 0.0), k, j, 0.05)
+        amplitudes.append(np.max(np.abs(theta[len(t) // 2:])))
+    assert speeds[int(np.argmax(amplitudes))] == pytest.approx(450.0, abs=10.0)
+
+
+# --------------------------------------------------------------------------- efficiency
+def test_low_load_factor_meets_the_catalog_point_and_rule():
+    """Graph 023-1: Ke(0.58) = 0.93 (CSF-20-80 example); Ke = 1 at and above rated torque.
+    With q = 1, c solves 0.58·(1 + c)/(0.58 + c) = 0.93 → c = 0.58·0.07/0.35."""
+    c = 0.58 * 0.07 / 0.35
+    ke = fx.low_load_factor(np.array([0.1, 0.3, 0.58, 1.0, 1.3]), c, 1.0)
+    assert ke[2] == pytest.approx(0.93, abs=1e-12)
+    assert ke[3] == 1.0 and ke[4] == 1.0
+    assert np.all(np.diff(ke[:4]) > 0)
+
+
+def test_temperature_factor_is_one_at_reference_and_rises_with_warm_grease():
+    t = np.array([0.0, 20.0, 40.0, 1e4])
+    f = fx.temperature_factor(t, 0.2, 0.03, 20.0)
+    assert f[1] == 1.0
+    assert f[0] < f[1] < f[2]
+    assert f[3] == pytest.approx(1 / (1 - 0.2))   # viscous loss gone entirely
+
+
+# --------------------------------------------------------------------------- noise
+def test_noise_estimate_ignores_a_smooth_signal_and_sees_coloured_noise():
+    rng = np.random.default_rng(1)
+    n, sigma = 4000, 1.0
+    signal = 50 * np.sin(np.linspace(0, 6 * math.pi, n))          # 50× the noise
+    white = sigma * rng.standard_normal(n)
+    assert noise_rms(signal + white) == pytest.approx(sigma, rel=0.06)
+    ar = np.empty(n)                                              # AR(1), φ = 0.8
+    ar[0] = rng.standard_normal()
+    for i in range(1, n):
+        ar[i] = 0.8 * ar[i - 1] + rng.standard_normal()
+    ar *= sigma / ar.std()
+    assert noise_rms(signal + ar) == pytest.approx(sigma, rel=0.12)
+    # AR(1): τ = (1 + φ)/(1 − φ) = 9 samples
+    assert correlation_time(ar) == pytest.approx(9.0, rel=0.35)
+
+
+# --------------------------------------------------------------------------- baseline
+def test_baseline_twist_reproduces_the_seed_example_and_printed_points():
+    """Seed 000 p.020, CSF-25-100: 2.9 N·m → 9.4×10⁻⁵ rad, 39 N·m → 9.4×10⁻⁴ rad; the GH
+    curve passes through the printed (T1, θ1) and (T2, θ2) of table 060-1."""
+    from hdcad.catalog import load_catalog
+    catalog = load_catalog()
+    curve, _ = stiffness_curve(resolve("CSF-25-100-2A-GR", catalog))
+    theta, _ = twist_of(curve, np.array([2.9, 39.0, -39.0]))
+    np.testing.assert_allclose(theta, [9.4e-5, 9.4e-4, -9.4e-4], rtol=0.01)
+    model = resolve("CSF-32-100-GH", catalog)
+    curve, _ = stiffness_curve(model)
+    theta, _ = twist_of(curve, np.array([29.0, 108.0]))
+    np.testing.assert_allclose(theta, [0.00044, 0.00116], rtol=1e-12)
