@@ -5,10 +5,15 @@ effect has its own formulation here, so the library passes only if its effect fo
 physics they were not written from.
 
 - torsion: twist = ∫ compliance dT along the catalog curve (numerical integration, not the
-  segment formula) + Bouc–Wen hysteresis integrated along the torque path + a smoothed
-  dead zone (backlash) solved numerically + a series housing spring.
+  segment formula) + a Masing-rule hysteresis loop on a Ramberg–Osgood backbone (the
+  library uses Bouc–Wen) + a smoothed dead zone (backlash) solved numerically + a series
+  housing spring.
 - transmission: output = input/R + offset + TE harmonics of the wave-generator angle.
-- efficiency: η = η0 · Ke(α) · (viscous-loss temperature factor), α = T/Tr.
+- efficiency: η = η0 · Ke(α, n) · (viscous-loss temperature factor), α = T/Tr. Ke comes from
+  a Palmgren-type loss split, a speed-dependent no-load drag plus a load-dependent
+  Coulomb-like loss ∝ T^(1+y) (the library: one fixed no-load loss, α/(α + c)); the viscous
+  loss follows an ISO VG68-like oil's Vogel viscosity ln ν = A + B/(t + C) (the library: an
+  exponential).
 - vibration: J·θ'' + c·θ' + K·θ = K·e(φ(t)) integrated with ``solve_ivp`` (DOP853) over a
   linear run-up of the input speed from standstill.
 
@@ -34,8 +39,14 @@ Seed 000 p.023: η = Ke·ηR, α = T/Tr, Ke(0.58) = 0.93 (CSF, graph 023-1, cata
 Seed 003 tables 051-1/059-1 (``gh_performance``, accuracy), 052-1/060-1 (``gh_stiffness``),
 p.052/060 (``gh_hysteresis``), 052-2/060-2 (``gh_backlash``), 050-1/058-1 (rated torque).
 Seed 001 table 314-1 (FD spring constant), 310-1 (FD rated torque).
-Bouc, R. (1967) "Forced vibration of mechanical systems with hysteresis"; Wen, Y.-K. (1976)
-"Method for random vibration of hysteretic systems", J. Eng. Mech. Div. 102(2).
+Masing, G. (1926) "Eigenspannungen und Verfestigung beim Messing", Proc. 2nd Int. Congr.
+Appl. Mech., Zürich; Ramberg, W. & Osgood, W. R. (1943) "Description of stress-strain curves
+by three parameters", NACA TN 902; Jennings, P. C. (1964) "Periodic response of a general
+yielding structure", J. Eng. Mech. Div. 90(EM2) (extended Masing rule).
+Palmgren, A. (1959) "Ball and roller bearing engineering", 3rd ed. (friction torque
+M = M0 + M1: M0 ∝ (ν·n)^(2/3) without load, M1 = f1·P·dm with f1 ∝ (P/C0)^y).
+Vogel, H. (1921) Phys. Z. 22, 645 (ln ν = A + B/(t + C)); Andrade, E. N. da C. (1930)
+Nature 125, 309; ISO 3448 (viscosity grade VG68: 61.2-74.8 mm²/s at 40 °C).
 """
 
 from __future__ import annotations
@@ -83,9 +94,11 @@ TORSION_ROWS = (2000, 4000)
 BRIDGE_FRACTIONS = (0.02, 0.05, 0.1)
 TORQUE_GRID = 4001                # points of the compliance integration grid, 0…|T|max
 HYSTERESIS_SCALE = (0.5, 1.5)     # × catalog hysteresis loss ("about", seed 003 p.052/060)
-HYSTERESIS_TS = (0.05, 0.3)       # Bouc–Wen saturation torque / rated torque
-HYSTERESIS_BETA = (0.5, 0.9)      # Bouc–Wen β (γ = 1 − β keeps |z| ≤ 1)
-HYSTERESIS_N = (1.0, 2.5)         # Bouc–Wen smoothness exponent
+# Masing loop on a Ramberg–Osgood backbone (the formulation the generator uses):
+# |T|/T_y = u·(1 + α_RO·u^(r−1)), u = hysteretic twist / its scale.
+RO_YIELD_TORQUE = (0.05, 0.3)     # T_y / rated torque: where the internal friction slips
+RO_ALPHA = (0.5, 2.0)             # Ramberg–Osgood yield offset α_RO (1 is the usual choice)
+RO_EXPONENT = (1.5, 4.0)          # Ramberg–Osgood exponent r (≥ 1; large r ≈ Coulomb slip)
 BACKLASH_SCALE = (0.3, 1.0)       # × catalog maximum backlash (052-2/060-2 are maxima)
 BACKLASH_SMOOTH = (0.005, 0.02)   # torque that half-closes the play / T0
 BACKLASH_EPS = 0.1                # dead-zone rounding angle / half play
@@ -110,7 +123,18 @@ KE_AT_058 = (0.90, 0.96)          # Ke(0.58) around the catalog point 0.93 (ke_c
 KE_ALPHA_POINT = 0.58             # α of the catalog point (seed 000 p.023 example)
 T_REF_C = 20.0                    # lubricant temperature of the seed 000 p.023 example
 VISCOUS_SHARE = (0.3, 0.7)        # share of the loss at T_REF that scales with viscosity
-VISCOSITY_SLOPE = (0.02, 0.05)    # 1/K: oil viscosity halves every 14-35 K (typical oils)
+# Loss split of the low-load truth (Palmgren's bearing friction M = M0 + M1): a no-load drag
+# torque M0 ∝ n^m (M0 ∝ (ν·n)^(2/3) in Palmgren) and a load-dependent Coulomb-like torque
+# M1 = f1·P·dm with f1 ∝ (P/C0)^y, i.e. a loss ∝ T^(1+y).
+KE_REF_SPEED_RPM = 1000.0         # input speed of the catalog Ke example (seed 000 p.023)
+DRAG_SPEED_EXPONENT = (0.3, 0.8)  # m: drag torque ∝ n^m (Palmgren 2/3; churning 0.3-1)
+LOAD_LOSS_EXPONENT = (0.0, 0.5)   # y: Coulomb-like loss ∝ T^(1+y) (Palmgren f1 ∝ (P/C0)^y)
+DRAG_SHARE_LIMITS = (0.02, 0.95)  # no-load drag / total loss at rated torque and 1000 r/min
+# Vogel viscosity of an ISO VG68-like base oil: ln ν = A + B/(t + C), ν in mm²/s, t in °C.
+VG_NU40 = (61.2, 74.8)            # ν at 40 °C: the VG68 band (ISO 3448: 68 ± 10 %)
+VG_NU100 = (8.0, 9.5)             # ν at 100 °C: mineral VG68 oils with VI ≈ 85-120
+VOGEL_C = (80.0, 110.0)           # °C: Vogel's temperature offset C of mineral oils
+VISCOUS_EXPONENT = (0.5, 1.0)     # viscous loss ∝ ν^p (Palmgren drag p = 2/3; Petroff p = 1)
 
 # --- vibration design choices ---------------------------------------------------------
 RESONANCE_2X_RPM = (150.0, 600.0)  # input speed of the te_2x resonance (sets J)
@@ -270,59 +294,70 @@ def torque_path(t0: float, cycles: int, rows: int) -> np.ndarray:
     return np.interp(np.linspace(0.0, length[-1], rows), length, turns)
 
 
-def _bouc_wen_rate(direction: float, t_sat: float, beta: float, n: float):
-    gamma = 1.0 - beta
+def ramberg_osgood_backbone(torque, t_y: float, alpha_ro: float, r: float) -> np.ndarray:
+    """Backbone u(T) of the truth's hysteresis, |T|/T_y = u·(1 + α·u^(r−1)) (Ramberg & Osgood
+    1943, NACA TN 902): a power-law slip that never saturates, unlike the library's Bouc–Wen.
 
-    def rate(_s, z):
-        zz = z[0]
-        return [direction / t_sat * (1.0 - abs(zz) ** n
-                                     * (beta * np.sign(direction * zz) + gamma))]
-    return rate
+    Odd in T. Written as the slip u of the internal friction
+    against the torque that drives it: linear (u = T/T_y) well below T_y, softening above
+    (u ∝ T^(1/r)). Solved by bisection (the right-hand side is monotone in u ≥ 0).
+    """
+    torque = np.asarray(torque, dtype=float)
+    x = np.abs(torque) / t_y
+    lo, hi = np.zeros_like(x), x.copy()           # u ≤ x since α·u^r ≥ 0
+    for _ in range(80):
+        mid = 0.5 * (lo + hi)
+        above = mid * (1.0 + alpha_ro * mid ** (r - 1.0)) > x
+        hi = np.where(above, mid, hi)
+        lo = np.where(above, lo, mid)
+    return np.sign(torque) * 0.5 * (lo + hi)
 
 
-def bouc_wen_state(torque: np.ndarray, t_sat: float, beta: float, n: float) -> np.ndarray:
-    """Bouc–Wen state z (−1…1) along a torque path, z(0) = 0.
+def masing_state(torque, t_y: float, alpha_ro: float, r: float) -> np.ndarray:
+    """Hysteretic slip u by Masing's rule on the Ramberg–Osgood backbone (Masing 1926;
+    Jennings 1964): a rate-free memory-rule loop, not the library's Bouc–Wen differential law.
 
-    dz/dT = (1/Ts)·[1 − |z|ⁿ·(β·sgn(dT·z) + γ)], γ = 1 − β (Wen 1976 with A = 1), integrated
-    with ``solve_ivp`` on each monotone leg of the path (the path parameter is |ΔT|).
+    Virgin loading follows the backbone B(T); after a reversal at (T_r, u_r) the branch is
+    u = u_r + 2·B((T − T_r)/2) (Masing 1926: the backbone doubled in both axes); a branch
+    that passes the largest |T| reached before rejoins the backbone (Jennings 1964, the
+    extended Masing rule). Independent of Bouc–Wen: a rate-free, memory-rule model.
     """
     torque = np.asarray(torque, dtype=float)
     step = np.diff(torque)
     sign = np.sign(step)
-    # Legs: runs of samples with the same loading direction (zero steps join the run).
     for i in range(1, len(sign)):
         if sign[i] == 0:
             sign[i] = sign[i - 1]
-    z = np.zeros_like(torque)
-    start = 0
+    u = np.zeros_like(torque)
+    if len(torque) < 2:
+        return u
+    start, virgin, reached = 0, True, 0.0
     while start < len(step):
         stop = start
         while stop + 1 < len(step) and sign[stop + 1] == sign[start]:
             stop += 1
         leg = torque[start:stop + 2]
-        # Path parameter; repeated torque values (a zero step) share one evaluation point.
-        s, back = np.unique(np.abs(leg - leg[0]), return_inverse=True)
-        if s[-1] > 0:
-            sol = solve_ivp(_bouc_wen_rate(float(sign[start]), t_sat, beta, n), (0.0, s[-1]),
-                            [z[start]], t_eval=s, rtol=1e-9, atol=1e-12, method="RK45")
-            z[start:stop + 2] = sol.y[0][back]
-        else:
-            z[start:stop + 2] = z[start]
+        t_r, u_r = leg[0], u[start]
+        branch = ramberg_osgood_backbone(leg, t_y, alpha_ro, r) if virgin else \
+            u_r + 2.0 * ramberg_osgood_backbone(0.5 * (leg - t_r), t_y, alpha_ro, r)
+        beyond = np.abs(leg) > reached
+        branch = np.where(beyond & (np.sign(leg) == sign[start]),
+                          ramberg_osgood_backbone(leg, t_y, alpha_ro, r), branch)
+        u[start:stop + 2] = branch
+        reached = max(reached, float(np.max(np.abs(leg))))
+        virgin = False
         start = stop + 1
-    return z
+    return u
 
 
-def bouc_wen_loss(t_rated: float, t_sat: float, beta: float, n: float) -> float:
-    """Width at zero torque (B−B′, seed 000 p.020) of the steady ±Tr loop of −z (unit a)."""
-    path = torque_path(t_rated, 2, 8001)
-    z = bouc_wen_state(path, t_sat, beta, n)
-    last = slice(len(path) // 2, None)      # second cycle: steady loop
-    t, zz = path[last], z[last]
-    going_down = np.diff(t) < 0
-    crossings = np.where(np.diff(np.sign(t)) != 0)[0]
-    down = [zz[i] for i in crossings if going_down[i]]
-    up = [zz[i] for i in crossings if not going_down[i]]
-    return float(up[0] - down[0])
+def masing_loss(t0: float, t_y: float, alpha_ro: float, r: float) -> float:
+    """Loop width at zero torque (B − B′, seed 000 p.020) of steady ±T0 cycles of −u.
+
+    Closed form of Masing's rule: unloading from +T0 leaves u = B(T0) − 2·B(T0/2) at T = 0,
+    so the width is 2·(2·B(T0/2) − B(T0)); it vanishes as T0/T_y → 0 (linear backbone).
+    """
+    b = ramberg_osgood_backbone(np.array([0.5 * t0, t0]), t_y, alpha_ro, r)
+    return float(2.0 * (2.0 * b[0] - b[1]))
 
 
 def smoothed_dead_zone_twist(torque, width_rad: float, t_half: float) -> np.ndarray:
@@ -357,15 +392,14 @@ def _torsion_effect(name: str, torque, model, figures, t0, rng) -> tuple[np.ndar
     tr = rated_torque(model)
     if name == "hysteresis":
         loss = figures["hysteresis_rad"] * rng.uniform(*HYSTERESIS_SCALE)
-        t_sat = tr * rng.uniform(*HYSTERESIS_TS)
-        beta, n = rng.uniform(*HYSTERESIS_BETA), rng.uniform(*HYSTERESIS_N)
-        amplitude = loss / bouc_wen_loss(tr, t_sat, beta, n)
-        params = {"loss_at_rated_rad": loss, "amplitude_rad": amplitude, "t_sat_Nm": t_sat,
-                  "beta": beta, "n": n}
-        # A friction torque in parallel with the gear spring, T = K·θ + a·K·z(θ): the
-        # twist is θ_spring − a·z, so unloading leaves a positive twist at T = 0 (B, seed
-        # 000 p.020) and the loop is centred on the catalog curve (the model's average).
-        return -amplitude * bouc_wen_state(torque, t_sat, beta, n), params
+        t_y = tr * rng.uniform(*RO_YIELD_TORQUE)
+        alpha_ro, r = rng.uniform(*RO_ALPHA), rng.uniform(*RO_EXPONENT)
+        amplitude = loss / masing_loss(tr, t_y, alpha_ro, r)
+        params = {"loss_at_rated_rad": loss, "amplitude_rad": amplitude, "t_yield_Nm": t_y,
+                  "ro_alpha": alpha_ro, "ro_exponent": r}
+        # Internal friction slips by u (Masing loop): the twist lags the torque, −amplitude·u,
+        # so unloading leaves a positive twist at T = 0 (B, seed 000 p.020).
+        return -amplitude * masing_state(torque, t_y, alpha_ro, r), params
     if name == "backlash":
         width = figures["backlash_rad"] * rng.uniform(*BACKLASH_SCALE)
         t_half = t0 * rng.uniform(*BACKLASH_SMOOTH)
@@ -447,28 +481,55 @@ def transmission_case(model: GearModel, effects, rng: np.random.Generator, catal
 # efficiency
 # ======================================================================================
 
-def load_factor(alpha, ke_point: float, proportional_eff: float) -> np.ndarray:
-    """Ke(α): a load-independent (no-load) loss beside a load-proportional one.
+def palmgren_load_factor(alpha, speed_rpm, ke_point: float, eta0: float, drag_exponent: float,
+                         load_exponent: float) -> tuple[np.ndarray, dict]:
+    """Ke(α, n) = η(α, n)/η(1, n) with Palmgren's (1959) loss split, a speed-dependent drag
+    plus a Coulomb-like loss ∝ T^(1+y): the library has one speed-free no-load loss instead.
 
-    η(α) = α / (α/ηp + λ) → Ke = η(α)/η(1) = α·(1/ηp + λ)/(α/ηp + λ); λ is solved so that
-    Ke(``KE_ALPHA_POINT``) = ``ke_point`` (catalog point 0.93, seed 000 p.023); Ke = 1 for
-    α ≥ 1 (seed 000 p.023 note under graph 023-1).
+    Palmgren (1959, "Ball and roller bearing engineering") splits friction into a no-load
+    torque M0 ∝ (ν·n)^(2/3) and a load torque M1 ∝ P^(1+y); per rated output power the loss
+    is d(n) + μ·α^(1+y), d(n) = d1·(n/1000 r/min)^m, so η = α/(α + d(n) + μ·α^(1+y)). With
+    d1 + μ = 1/η0 − 1, d1 is solved so that Ke(0.58) = ``ke_point`` at 1000 r/min, the
+    catalog example's speed (seed 000 p.023, ke_curve 023-1); Ke = 1 for α ≥ 1 (note under
+    graph 023-1). Warmer or faster: the drag share and so the low-load drop grow with n.
     """
-    u, a = 1.0 / proportional_eff, KE_ALPHA_POINT
-    lam = a * u * (1.0 - ke_point) / (ke_point - a)
+    total, a = 1.0 / eta0 - 1.0, KE_ALPHA_POINT
+    p = a ** (1.0 + load_exponent)
+    drag = (a * (1.0 + total) / ke_point - a - total * p) / (1.0 - p)
+    drag = float(np.clip(drag, DRAG_SHARE_LIMITS[0] * total, DRAG_SHARE_LIMITS[1] * total))
+    mu = total - drag
     alpha = np.asarray(alpha, dtype=float)
-    ke = alpha * (u + lam) / (alpha * u + lam)
-    return np.where(alpha >= 1.0, 1.0, ke)
+    d = drag * (np.asarray(speed_rpm, dtype=float) / KE_REF_SPEED_RPM) ** drag_exponent
+
+    def eta(x):
+        return x / (x + d + mu * x ** (1.0 + load_exponent))
+
+    ke = np.where(alpha >= 1.0, 1.0, eta(np.minimum(alpha, 1.0)) / eta(1.0))
+    ke_ref = a * (1.0 + total) / (a + drag + mu * p)
+    return ke, {"drag_share_at_1000rpm": drag / total, "coulomb_loss": mu,
+                "ke_at_0.58_1000rpm": ke_ref}
 
 
-def temperature_factor(temp_c, eta0: float, viscous_share: float, slope: float) -> np.ndarray:
-    """η(T)/η0 when the viscous share of the loss follows ν ∝ exp(−b·(T − T_REF)).
+def vogel_viscosity(temp_c, nu40: float, nu100: float, c: float) -> np.ndarray:
+    """Kinematic viscosity [mm²/s] by Vogel's law ln ν = A + B/(t + C) through ν(40 °C),
+    ν(100 °C) (Vogel 1921, Phys. Z. 22; the Andrade form with a temperature offset C)."""
+    b = math.log(nu40 / nu100) / (1.0 / (40.0 + c) - 1.0 / (100.0 + c))
+    a = math.log(nu40) - b / (40.0 + c)
+    return np.exp(a + b / (np.asarray(temp_c, dtype=float) + c))
 
-    Loss ratio 1/η − 1 = (1/η0 − 1)·[1 + w·(ν/ν_ref − 1)]: warmer grease is thinner, so
-    churning loss falls and efficiency rises (seed 000 p.023 lists temperature as a factor).
+
+def vogel_temperature_factor(temp_c, eta0: float, viscous_share: float, nu40: float,
+                             nu100: float, c: float, exponent: float) -> np.ndarray:
+    """η(t)/η0 with the viscous loss ∝ ν^p and Vogel's (1921) ν(t) of a VG68-like oil: steeper
+    and curved against the library's exponential viscosity (Reynolds).
+
+    Loss ratio 1/η − 1 = (1/η0 − 1)·[1 + w·((ν/ν(20 °C))^p − 1)]: churning and drag losses
+    follow the oil's viscosity (Palmgren p = 2/3), which falls steeply and non-exponentially
+    with temperature (seed 000 p.023: temperature is a factor; example at 20 °C).
     """
-    nu = np.exp(-slope * (np.asarray(temp_c, dtype=float) - T_REF_C))
-    loss = (1.0 / eta0 - 1.0) * (1.0 + viscous_share * (nu - 1.0))
+    ratio = vogel_viscosity(temp_c, nu40, nu100, c) / float(vogel_viscosity(T_REF_C, nu40,
+                                                                           nu100, c))
+    loss = (1.0 / eta0 - 1.0) * (1.0 + viscous_share * (ratio ** exponent - 1.0))
     return 1.0 / (1.0 + loss) / eta0
 
 
@@ -494,13 +555,20 @@ def efficiency_case(model: GearModel, effects, rng: np.random.Generator, catalog
 
     def make(name):
         if name == "low_load_efficiency":
-            p = {"ke_at_0.58": rng.uniform(*KE_AT_058)}
-            return 100.0 * eta0 * (load_factor(alpha, p["ke_at_0.58"], eta0) - 1.0), p
+            p = {"ke_at_0.58": rng.uniform(*KE_AT_058),
+                 "drag_speed_exponent": rng.uniform(*DRAG_SPEED_EXPONENT),
+                 "load_loss_exponent": rng.uniform(*LOAD_LOSS_EXPONENT)}
+            ke, info = palmgren_load_factor(alpha, speed, p["ke_at_0.58"], eta0,
+                                            p["drag_speed_exponent"], p["load_loss_exponent"])
+            p.update(info)
+            return 100.0 * eta0 * (ke - 1.0), p
         if name == "temperature_dependence":
-            p = {"viscous_share": rng.uniform(*VISCOUS_SHARE),
-                 "viscosity_slope_per_K": rng.uniform(*VISCOSITY_SLOPE)}
-            factor = temperature_factor(temp, eta0, p["viscous_share"],
-                                        p["viscosity_slope_per_K"])
+            p = {"viscous_share": rng.uniform(*VISCOUS_SHARE), "nu40_mm2s": rng.uniform(*VG_NU40),
+                 "nu100_mm2s": rng.uniform(*VG_NU100), "vogel_C": rng.uniform(*VOGEL_C),
+                 "viscous_exponent": rng.uniform(*VISCOUS_EXPONENT)}
+            factor = vogel_temperature_factor(temp, eta0, p["viscous_share"], p["nu40_mm2s"],
+                                              p["nu100_mm2s"], p["vogel_C"],
+                                              p["viscous_exponent"])
             return 100.0 * eta0 * (factor - 1.0), p
         raise ValueError(f"efficiency has no truth effect {name!r}")
 

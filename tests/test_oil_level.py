@@ -108,3 +108,10 @@ def test_component_set_cavity_is_empty_space_and_holds_the_oil(catalog):
     # the level is read against the seal lips of the larger shaft (output journal)
     housing = next(p for p in parts if p.name == "housing").dimensions
     assert cavity.seal_shaft_mm == pytest.approx(housing["shaft_hole_mm"] - 2.0)
+
+
+@pytest.mark.parametrize("bearing_od, says", [(55.0, "dip into the bath"),
+                                              (20.0, "stay above the bath")])
+def test_the_note_says_whether_the_support_bearings_reach_the_bath(bearing_od, says):
+    # level 15 mm below the axis: a Ø55 outer ring reaches 27.5 mm down, a Ø20 one 10 mm
+    assert says in _check(support_bearing_od_mm=bearing_od).note

@@ -90,6 +90,27 @@ def test_hysteresis_loop_absorbs_energy_and_leaves_positive_twist_after_loading(
     assert work > 0
 
 
+def test_dahl_with_halved_first_branch_obeys_masing_rule():
+    """Masing (1926): the first loading from the virgin state is the backbone and every later
+    branch is the backbone doubled. For Dahl (ρ = n = 1) a branch from −1 is
+    1 − 2·e^(−ΔT/T_s), so the backbone is 1 − e^(−2T/T_s): ``first_scale`` = 0.5."""
+    t0, t_s = 100.0, 25.0
+    torque = triangle(t0, 1, 4001)
+    z = fx.hysteresis_state(torque, t_s, 1.0, 1.0, first_scale=0.5)
+    first = slice(0, int(np.argmax(torque)) + 1)
+    np.testing.assert_allclose(z[first], 1.0 - np.exp(-2.0 * torque[first] / t_s),
+                               atol=2e-3)
+
+
+def test_hysteresis_start_state_is_the_loading_history():
+    """A gear already loaded to saturation (z0 = 1) twists no further hysteretically while
+    loading on; from z0 = −1 it has the whole rising branch ahead."""
+    torque = np.linspace(0.0, 50.0, 501)
+    assert np.allclose(fx.hysteresis_state(torque, 10.0, 1.0, 1.0, z_start=1.0), 1.0)
+    rising = fx.hysteresis_state(torque, 10.0, 1.0, 1.0, z_start=-1.0)
+    assert rising[0] == -1.0 and np.all(np.diff(rising) >= 0) and rising[-1] > 0.9
+
+
 def test_hysteresis_is_small_for_small_torque():
     """Seed 000 p.020: hysteresis loss is almost nil at very small torque."""
     big = fx.hysteresis_loss(1.0, 20.0, 0.5, 1.5, 100.0)
@@ -179,6 +200,20 @@ def test_low_load_factor_meets_the_catalog_point_and_rule():
     assert ke[2] == pytest.approx(0.93, abs=1e-12)
     assert ke[3] == 1.0 and ke[4] == 1.0
     assert np.all(np.diff(ke[:4]) > 0)
+
+
+def test_low_load_drop_grows_with_speed_and_keeps_the_catalog_point_at_1000_rpm():
+    """The no-load running torque rises with input speed (seed 000 p.023: efficiency
+    depends on speed): with s > 0, Ke(0.58) is the catalog 0.93 at the example's 1000 r/min,
+    lower above it and higher below; s = 0 is the speed-free curve; Ke = 1 at rated."""
+    c = 0.58 * 0.07 / 0.35
+    alpha = np.full(4, 0.58)
+    speed = np.array([500.0, 1000.0, 3000.0, 3000.0])
+    ke = fx.low_load_factor(alpha, c, 1.0, speed, 0.7)
+    assert ke[1] == pytest.approx(0.93, abs=1e-12)
+    assert ke[0] > ke[1] > ke[2]
+    assert fx.low_load_factor(alpha, c, 1.0, speed, 0.0)[3] == pytest.approx(0.93, abs=1e-12)
+    assert fx.low_load_factor(np.array([1.0]), c, 1.0, np.array([3000.0]), 0.7)[0] == 1.0
 
 
 def test_temperature_factor_is_one_at_reference_and_rises_with_warm_grease():

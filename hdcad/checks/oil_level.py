@@ -26,12 +26,15 @@ FORMULA = ("A < r_cavity (level inside the cavity);  A ≥ d_seal/2 (seal lips a
 def oil_level(lubrication: str, level_mm: float | None, level_source: str, axis: str,
               cavity_depth_mm: float | None, seal_shaft_mm: float | None,
               oil_volume_mL: float | None, volume_note: str = "",
-              plug_radius_mm: float | None = None) -> CheckResult:
+              plug_radius_mm: float | None = None,
+              support_bearing_od_mm: float | None = None) -> CheckResult:
     """Whether the housing holds the oil at level A [mm below the axis].
 
     ``cavity_depth_mm``: how far the cavity reaches below the axis [mm];
     ``seal_shaft_mm``: shaft diameter at the seal lips [mm]; ``oil_volume_mL``: cavity
-    volume below the level [mL]; ``plug_radius_mm``: radius of an axial level hole [mm].
+    volume below the level [mL]; ``plug_radius_mm``: radius of an axial level hole [mm];
+    ``support_bearing_od_mm``: outside diameter of a support bearing in the housing [mm]
+    (reported: whether the bath reaches it; the catalog level is set for the gear).
     """
     inputs = {"A": Quantity(level_mm, "mm", level_source), "axis": Quantity(axis),
               "r_cavity": Quantity(cavity_depth_mm, "mm", "generated housing"),
@@ -53,6 +56,12 @@ def oil_level(lubrication: str, level_mm: float | None, level_source: str, axis:
                 _plug(level_mm, plug_radius_mm)]
     failed = [c for c in criteria if c.status == FAIL]
     notes = [c.text for c in criteria]
+    if support_bearing_od_mm is not None:
+        reached = level_mm < support_bearing_od_mm / 2
+        notes.append(f"the support bearings (Ø{support_bearing_od_mm:g}) "
+                     + ("dip into the bath" if reached else
+                        "stay above the bath: they live on splash oil or their own grease "
+                        "(sealed bearings)"))
     if oil_volume_mL is not None:
         notes.append(f"oil volume to level A: {oil_volume_mL:.0f} mL{volume_note}")
     return CheckResult("oil_level", TITLE, "lubrication", FORMULA, inputs, level_mm,

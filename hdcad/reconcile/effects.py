@@ -39,6 +39,9 @@ from scipy import signal
 # Reference lubricant temperature of the efficiency model: the seed's efficiency example
 # (000 p.023, CSF-20-80) is at 20 °C; η0 is the efficiency there.
 REFERENCE_TEMPERATURE_C = 20.0
+# Input speed at which c of the low-load correction is stated: the seed's Ke example
+# (000 p.023, CSF-20-80) runs at 1000 r/min.
+KE_REFERENCE_SPEED_RPM = 1000.0
 # Torque reversals smaller than this fraction of the torque range are noise, not a new
 # loading branch (design choice: a quasi-static rig's torque signal is smooth; 2 % ignores
 # measurement ripple while any real reversal of the cycle is far larger).
@@ -56,6 +59,7 @@ class Parameter:
     upper: float
     scale: str = "1"       # context key: a catalog figure or a data range ('1' = absolute)
     linear: bool = False   # solved by linear least squares (an amplitude)
+    start: float | None = None  # fixed start of the shape fit (not grid-searched)
 
 
 @dataclass(frozen=True)
@@ -129,15 +133,19 @@ def _bouc_wen_branch(v: np.ndarray, w0: float, table) -> np.ndarray:
 
 
 def hysteresis_state(torque_Nm: np.ndarray, T_s: float, rho: float, n: float = 1.0,
-                     branches: tuple[np.ndarray, int] | None = None) -> np.ndarray:
+                     branches: tuple[np.ndarray, int] | None = None,
+                     z_start: float = 0.0, first_scale: float = 1.0) -> np.ndarray:
     """Hysteretic twist z [rad per rad of z_sat] along a torque history T [N·m].
 
     Bouc–Wen model written as a function of torque, normalised so that z saturates at ±1:
     dz/dT = (1/T_s)·[1 − |z|ⁿ·(β·sgn(dT·z) + γ)], β + γ = 1, ρ = β − γ. z rises towards
     +1 on loading and falls towards −1 on unloading over a torque scale T_s; n sets how
     sharply it saturates; ρ = 1, n = 1 is Dahl's friction model (a Masing loop with an
-    exponential backbone), ρ = 0 unloads linearly until z changes sign. Starts from z = 0
-    (virgin state). Friction makes the twist lag the torque (smaller on loading than on
+    exponential backbone), ρ = 0 unloads linearly until z changes sign. Starts from
+    z = ``z_start`` (0: virgin state; a gear with a loading history before the record starts
+    anywhere in −1…1). The first branch runs over the torque scale ``first_scale``·T_s: 1 is
+    plain Bouc–Wen, 0.5 makes Dahl's model obey Masing's rule (the virgin curve is the loop
+    branch halved in both axes; Masing 1926). Friction makes the twist lag the torque (smaller on loading than on
     unloading, so the loop absorbs energy and a positive twist B remains after unloading from
     +T, seed 000 p.020): the twist contribution is −z_sat·z. Each loading branch (between
     turning points) is solved exactly by quadrature of the autonomous branch equation.
@@ -148,11 +156,13 @@ def hysteresis_state(torque_Nm: np.ndarray, T_s: float, rho: float, n: float = 1
     starts, direction = branches
     z = np.empty_like(torque_Nm, dtype=float)
     bounds = list(starts) + [len(torque_Nm)]
-    z0 = 0.0
+    z0 = float(np.clip(z_start, -1.0, 1.0))
+    scale = T_s * first_scale
     for s, e in zip(bounds[:-1], bounds[1:]):
         seg = torque_Nm[s:e + 1] if e < len(torque_Nm) else torque_Nm[s:e]
         travel = direction * (seg - seg[0])
-        v = np.maximum.accumulate(np.maximum(travel, 0.0)) / T_s
+        v = np.maximum.accumulate(np.maximum(travel, 0.0)) / scale
+        scale = T_s
         w = _bouc_wen_branch(v, direction * z0, table)
         z[s:e] = direction * w[:e - s]
         z0 = direction * w[-1]
@@ -272,14 +282,19 @@ def joint_filter(wn: float, zeta: float, dt: float) -> tuple[np.ndarray, np.ndar
     return b, a
 
 
-def low_load_factor(alpha: np.ndarray, c: float, q: float) -> np.ndarray:
+def low_load_factor(alpha: np.ndarray, c: float, q: float, speed_rpm: np.ndarray | None = None,
+                    s: float = 0.0) -> np.ndarray:
     """Efficiency correction Ke(α) [-] for α = T/Tr < 1; Ke = 1 for α ≥ 1.
 
-    Ke = (α·(1 + c)/(α + c))^q: a load-independent loss (no-load running torque, seed 000
-    p.023) that is the fraction c of the rated output power makes η fall as α/(α + c); the
-    exponent q shapes the curve. Ke(1) = 1, Ke → 0 as α → 0.
+    Ke = (α·(1 + c_n)/(α + c_n))^q: a load-independent loss (no-load running torque, seed 000
+    p.023) that is the fraction c_n of the rated output power makes η fall as α/(α + c_n);
+    the exponent q shapes the curve. Ke(1) = 1, Ke → 0 as α → 0. The no-load running torque
+    rises with input speed (seed 000 p.023: efficiency depends on input speed), so
+    c_n = c·(n/``KE_REFERENCE_SPEED_RPM``)^s; s = 0 (or no speed given) is a speed-free Ke.
     """
     a = np.minimum(np.asarray(alpha, dtype=float), 1.0)
+    if speed_rpm is not None and s != 0.0:
+        c = c * (np.asarray(speed_rpm, dtype=float) / KE_REFERENCE_SPEED_RPM) ** s
     return (a * (1.0 + c) / (a + c)) ** q
 
 
@@ -327,14 +342,20 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                      "twist does not return to zero (B−B′); internal friction makes the twist "
                      "depend on the loading direction, a loop (seed 000 p.020; figures seed "
                      "003 p.052/p.060)."),
-        form="θ = θ_catalog(T) − z_sat·z(T history; T_s, ρ, n)  (Bouc–Wen in torque)",
+        form=("θ = θ_catalog(T) − z_sat·z(T history; T_s, ρ, n, z0, first_scale)  "
+              "(Bouc–Wen in torque)"),
         parameters=(
             Parameter("z_sat", "rad", "saturation of the hysteretic twist", 0.0, 20.0,
                       "hysteresis_rad", linear=True),
-            Parameter("T_s", "N·m", "torque over which the loop saturates", 0.01, 1.0, "T0"),
+            Parameter("T_s", "N·m", "torque over which the loop saturates", 0.01, 5.0, "T0"),
             Parameter("rho", "-", "branch shape (1 = Dahl/Masing, 0 = linear unloading)",
-                      -0.9, 3.0),
+                      -0.9, 5.0),
             Parameter("n", "-", "sharpness of the saturation", 0.5, 4.0),
+            Parameter("z0", "-", "hysteretic state at the first sample (0 = virgin; the "
+                      "loading history before the record is unknown)", -1.0, 1.0, start=0.0),
+            Parameter("first_scale", "-", "torque scale of the first loading branch / T_s "
+                      "(1 = Bouc–Wen; Masing's rule halves it from the virgin state)", 0.2, 2.0,
+                      start=1.0),
         ),
         kinds=("torsion",)),
     Effect(
@@ -366,11 +387,14 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
         description=("Efficiency falls when the load torque is below rated: η = Ke·ηR, "
                      "α = T/Tr, Ke = 1 for α ≥ 1 (seed 000 p.023, graph 023-1: α = 0.58 → "
                      "Ke = 0.93)."),
-        form="η = Ke(α)·η0, Ke = (α(1 + c)/(α + c))^q for α < 1, 1 above",
+        form=("η = Ke(α, n)·η0, Ke = (α(1 + c_n)/(α + c_n))^q for α < 1, 1 above; "
+              "c_n = c·(n/1000 r/min)^s"),
         parameters=(
-            Parameter("c", "-", "load-independent loss as a fraction of rated power",
-                      1e-4, 3.0),
+            Parameter("c", "-", "load-independent loss as a fraction of rated power at "
+                      "1000 r/min input speed", 1e-4, 3.0),
             Parameter("q", "-", "shape exponent", 0.2, 5.0),
+            Parameter("s", "-", "speed exponent of the no-load loss (0: independent of "
+                      "speed; drag and churning torques rise about as n^0.3…n^1)", 0.0, 1.5),
         ),
         kinds=("efficiency",)),
     Effect(

@@ -206,7 +206,8 @@ def _columns(problem: Problem, effects: tuple[str, ...], theta: dict[str, float]
         th = {p.name: theta[_key(name, p.name)]
               for p in fx.nonlinear_parameters(name, problem.kind)}
         if name == "hysteresis":
-            z = fx.hysteresis_state(inp["torque_Nm"], th["T_s"], th["rho"], th["n"], branches)
+            z = fx.hysteresis_state(inp["torque_Nm"], th["T_s"], th["rho"], th["n"], branches,
+                                    th["z0"], th["first_scale"])
             add(name, ["z_sat"], -z, 0.0)
         elif name == "backlash":
             add(name, ["lost_motion"], fx.backlash_twist(inp["torque_Nm"], 1.0, th["T_w"]), 0.0)
@@ -216,7 +217,8 @@ def _columns(problem: Problem, effects: tuple[str, ...], theta: dict[str, float]
             add(name, ["sin", "cos"], _harmonic(problem, int(name[3]), th.get("damping_ratio"),
                                                 full))
         elif name == "low_load_efficiency":
-            f = fx.low_load_factor(inp["alpha"], th["c"], th["q"])
+            f = fx.low_load_factor(inp["alpha"], th["c"], th["q"], inp["input_speed_rpm"],
+                                   th["s"])
             factor = f if factor is None else factor * f
         elif name == "temperature_dependence":
             f = fx.temperature_factor(inp["temperature_C"], th["a"], th["b"],
@@ -269,7 +271,10 @@ def fit_model(problem: Problem, effects: tuple[str, ...],
     theta = dict(start or {})
     new = [k for k in keys if k not in theta]
     for k in keys:
-        theta.setdefault(k, float(_grid(params[k], scale[k])[GRID_POINTS // 2]))
+        start_value = params[k].start
+        theta.setdefault(k, float(_grid(params[k], scale[k])[GRID_POINTS // 2])
+                         if start_value is None else start_value * scale[k])
+    searched = [k for k in new if params[k].start is None]
 
     def rss_of(th):
         Xf, beta, *_ = _evaluate(problem, effects, th)
@@ -288,16 +293,17 @@ def fit_model(problem: Problem, effects: tuple[str, ...],
                 best, out = rss, trial
         return out
 
-    if new:
-        theta = grid_search(theta, new, GRID_POINTS)
+    if searched:
+        theta = grid_search(theta, searched, GRID_POINTS)
     if keys:
         theta = _polish(problem, effects, theta, keys, params, scale)
     old = [k for k in keys if k not in new]
     if new and old:
         # the earlier effects' shapes were fitted without the new one and may have bent to
         # mimic it: search them again with the new effect in place and keep the better fit
-        again = _polish(problem, effects, grid_search(theta, old, REGRID_POINTS), keys,
-                        params, scale)
+        old_searched = [k for k in old if params[k].start is None]
+        again = _polish(problem, effects, grid_search(theta, old_searched, REGRID_POINTS)
+                        if old_searched else theta, keys, params, scale)
         if rss_of(again) < rss_of(theta):
             theta = again
     Xf, beta, labels, lo, hi = _evaluate(problem, effects, theta)
@@ -507,7 +513,8 @@ def _params(problem: Problem, fit: Fit, effect: str) -> dict[str, dict]:
     if effect == "hysteresis":
         t0 = problem.scales["T0"]
         out = {"z_sat": (b["z_sat"], "rad"), "T_s": (th["T_s"], "N·m"), "rho": (th["rho"], "-"),
-               "n": (th["n"], "-"),
+               "n": (th["n"], "-"), "z0": (th["z0"], "-"),
+               "first_scale": (th["first_scale"], "-"),
                "loss_at_T0": (fx.hysteresis_loss(b["z_sat"], th["T_s"], th["rho"], th["n"], t0),
                               "rad"),
                "T0": (t0, "N·m")}
@@ -522,9 +529,9 @@ def _params(problem: Problem, fit: Fit, effect: str) -> dict[str, dict]:
         if "damping_ratio" in th:
             out["damping_ratio"] = (th["damping_ratio"], "-")
     elif effect == "low_load_efficiency":
-        out = {"c": (th["c"], "-"), "q": (th["q"], "-"),
-               "Ke_at_alpha_0.58": (float(fx.low_load_factor(np.array(0.58), th["c"],
-                                                             th["q"])), "-")}
+        out = {"c": (th["c"], "-"), "q": (th["q"], "-"), "s": (th["s"], "-"),
+               "Ke_at_alpha_0.58_1000rpm": (
+                   float(fx.low_load_factor(np.array(0.58), th["c"], th["q"])), "-")}
     elif effect == "temperature_dependence":
         out = {"a": (th["a"], "-"), "b": (th["b"], "1/K"),
                "t_ref": (fx.REFERENCE_TEMPERATURE_C, "°C")}
