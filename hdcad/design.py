@@ -60,7 +60,8 @@ def oil_level_check(model: GearModel, parts: list, duty: Duty, options: DesignOp
                     oil_volume_mL=oil.volume_below_mL(space.solid, level),
                     volume_note=space.note,
                     plug_radius_mm=parts[0].dimensions.get("oil_plug_radius_mm"),
-                    support_bearing_od_mm=parts[0].dimensions.get("bearing_seat_mm"))
+                    support_bearing_od_mm=parts[0].dimensions.get("bearing_seat_mm"),
+                    openings=space.openings)
     return oil_level(**args)
 
 

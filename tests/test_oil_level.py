@@ -115,3 +115,21 @@ def test_component_set_cavity_is_empty_space_and_holds_the_oil(catalog):
 def test_the_note_says_whether_the_support_bearings_reach_the_bath(bearing_od, says):
     # level 15 mm below the axis: a Ø55 outer ring reaches 27.5 mm down, a Ø20 one 10 mm
     assert says in _check(support_bearing_od_mm=bearing_od).note
+
+
+def test_an_opening_below_the_level_fails_and_is_named():
+    r = _check(openings=["a 1 mm gap all round"])
+    sealed = next(c for c in r.details["criteria"] if c["name"] == "sealed")
+    assert r.status == "fail" and sealed["status"] == "fail" and "1 mm gap" in sealed["text"]
+
+
+def test_fd_casing_cavity_names_the_running_gap(catalog):
+    pytest.importorskip("cadquery")
+    from hdcad.design_options import DesignOptions
+    from hdcad.geometry.build import build_parts
+    from hdcad.geometry.oil import fd_casing_cavity
+    from hdcad.models import resolve
+    options = DesignOptions(running_gap_mm=1.5)
+    cavity = fd_casing_cavity(build_parts(resolve("FD-25-80-2", catalog), catalog, options))
+    # the halves stand running_gap_mm apart (design option) and turn relative to each other
+    assert len(cavity.openings) == 1 and "1.5 mm running gap" in cavity.openings[0]

@@ -20,21 +20,23 @@ from .record import CheckResult, Quantity, FAIL, NOT_EVALUATED, PASS, margin_of
 
 TITLE = "Oil level and oil volume"
 FORMULA = ("A < r_cavity (level inside the cavity);  A ≥ d_seal/2 (seal lips above the oil);  "
-           "V_oil = volume of the cavity below y = −A")
+           "no opening below y = −A;  V_oil = volume of the cavity below y = −A")
 
 
 def oil_level(lubrication: str, level_mm: float | None, level_source: str, axis: str,
               cavity_depth_mm: float | None, seal_shaft_mm: float | None,
               oil_volume_mL: float | None, volume_note: str = "",
               plug_radius_mm: float | None = None,
-              support_bearing_od_mm: float | None = None) -> CheckResult:
+              support_bearing_od_mm: float | None = None,
+              openings: list[str] | None = None) -> CheckResult:
     """Whether the housing holds the oil at level A [mm below the axis].
 
     ``cavity_depth_mm``: how far the cavity reaches below the axis [mm];
     ``seal_shaft_mm``: shaft diameter at the seal lips [mm]; ``oil_volume_mL``: cavity
     volume below the level [mL]; ``plug_radius_mm``: radius of an axial level hole [mm];
     ``support_bearing_od_mm``: outside diameter of a support bearing in the housing [mm]
-    (reported: whether the bath reaches it; the catalog level is set for the gear).
+    (reported: whether the bath reaches it; the catalog level is set for the gear);
+    ``openings``: gaps in the cavity wall below the level, as the geometry found them.
     """
     inputs = {"A": Quantity(level_mm, "mm", level_source), "axis": Quantity(axis),
               "r_cavity": Quantity(cavity_depth_mm, "mm", "generated housing"),
@@ -53,7 +55,7 @@ def oil_level(lubrication: str, level_mm: float | None, level_source: str, axis:
         return _not_evaluated(inputs, "an oil cavity in the generated parts (this family's "
                                       "lubricant is held by the gear itself)")
     criteria = [_inside(level_mm, cavity_depth_mm), _seals(level_mm, seal_shaft_mm),
-                _plug(level_mm, plug_radius_mm)]
+                _sealed(openings or []), _plug(level_mm, plug_radius_mm)]
     failed = [c for c in criteria if c.status == FAIL]
     notes = [c.text for c in criteria]
     if support_bearing_od_mm is not None:
@@ -91,6 +93,14 @@ def _seals(level: float, seal_shaft: float | None) -> Criterion:
     return Criterion("seals", PASS if ok else FAIL,
                      f"seal lips on Ø{seal_shaft:g} reach {seal_shaft / 2:g} mm below the axis: "
                      + ("above the oil" if ok else "they stand in oil at rest"))
+
+
+def _sealed(openings: list[str]) -> Criterion:
+    if openings:
+        return Criterion("sealed", FAIL, "the oil would run out: " + "; ".join(openings))
+    return Criterion("sealed", PASS, "no opening in the cavity wall below the level (static "
+                                     "joints are metal to metal: seal them with liquid gasket "
+                                     "or add O-ring grooves)")
 
 
 def _plug(level: float, plug_radius: float | None) -> Criterion:

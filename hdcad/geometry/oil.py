@@ -6,7 +6,7 @@ the plane y = −A. Volumes come from OCCT booleans on the cavity solid.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import cadquery as cq
 
@@ -20,6 +20,7 @@ class OilCavity:
     depth_mm: float          # how far the cavity reaches below the axis
     seal_shaft_mm: float | None
     note: str                # what the cavity volume includes and leaves out
+    openings: list[str] = field(default_factory=list)  # gaps in its wall below the axis
 
 
 def fd_casing_cavity(parts: list[Part]) -> OilCavity:
@@ -40,7 +41,17 @@ def fd_casing_cavity(parts: list[Part]) -> OilCavity:
     return OilCavity(solid, pilot / 2, shaft,
                      " at most: the space inside the casing halves (pilot recesses) less the "
                      "shaft; the component set's own volume below the level is not in the "
-                     "catalog and is not subtracted")
+                     "catalog and is not subtracted", [_running_gap(halves, pilot)])
+
+
+def _running_gap(halves: list[Part], pilot: float) -> str:
+    """The gap between the two turning casing halves: it opens the cavity all round."""
+    faces = sorted(p.offset_z_mm for p in halves)
+    outer = max(p.dimensions["outer_diameter_mm"] for p in halves)
+    return (f"the {faces[-1] - faces[0]:g} mm running gap between the casing halves, which turn "
+            f"relative to each other, opens the cavity all round from Ø{pilot:g} to "
+            f"Ø{outer:g}; the FD-0 unit's seal there is shown only in the lost figure 311-1: "
+            "add a rotary seal or labyrinth there before filling oil")
 
 
 def volume_below_mL(solid: cq.Shape, level_mm: float) -> float:

@@ -89,6 +89,24 @@ def lubricant_row(family: str, lubrication: str, grease: str, oil_volume_mL: flo
                   "grease amounts for this type are not in the seeds; add them via overlay")
 
 
+JOINT_SEALING = {
+    "FD-2": ("rotary seal across the running gap", "not generated",
+             "the casing halves turn relative to each other: seal the gap between them (see "
+             "the oil_level check); the spline-to-casing faces take liquid gasket"),
+    "2A-GR": ("liquid gasket or O-rings", "not generated",
+              "static joints cover–circular spline–housing and flange–flexspline: liquid "
+              "gasket, or add O-ring grooves (ISO 3601) to the design"),
+}
+
+
+def sealing_row(family: str) -> BomRow | None:
+    """O-rings and gaskets: what the joints of this family need (hdcad models none)."""
+    if family not in JOINT_SEALING:
+        return None
+    designation, quantity, note = JOINT_SEALING[family]
+    return BomRow("o-ring / gasket", designation, quantity, "assembly", note)
+
+
 def bill_of_materials(parts: list[dict], checks: list[dict], family: str, lubrication: str,
                       grease: str, bolt_class: str, grease_g: float | None = None
                       ) -> list[BomRow]:
@@ -103,5 +121,7 @@ def bill_of_materials(parts: list[dict], checks: list[dict], family: str, lubric
     oil = next((c for c in checks if c["id"] == "oil_level"), None)
     volume = oil["details"].get("oil_volume_mL") if oil else None
     level = oil["value"] if oil else None
+    sealing = sealing_row(family)
+    rows += [sealing] if sealing else []
     rows.append(lubricant_row(family, lubrication, grease, volume, level, grease_g))
     return rows
