@@ -133,3 +133,8 @@ def test_fd_casing_cavity_names_the_running_gap(catalog):
     cavity = fd_casing_cavity(build_parts(resolve("FD-25-80-2", catalog), catalog, options))
     # the halves stand running_gap_mm apart (design option) and turn relative to each other
     assert len(cavity.openings) == 1 and "1.5 mm running gap" in cavity.openings[0]
+
+
+def test_no_margin_is_shown_when_a_non_numeric_criterion_fails():
+    assert _check(openings=["gap"]).margin is None
+    assert _check(level_mm=50.0).margin < 0

@@ -69,9 +69,17 @@ def oil_level(lubrication: str, level_mm: float | None, level_source: str, axis:
     return CheckResult("oil_level", TITLE, "lubrication", FORMULA, inputs, level_mm,
                        cavity_depth_mm, "mm", "<=", FAIL if failed else PASS,
                        f"{level_source}; seed 000 p.018", "; ".join(notes),
-                       margin_of(level_mm, cavity_depth_mm, "<="),
+                       _margin(level_mm, cavity_depth_mm, failed),
                        {"criteria": [c.__dict__ for c in criteria],
                         "oil_volume_mL": oil_volume_mL})
+
+
+def _margin(level: float, depth: float, failed: list[Criterion]) -> float | None:
+    """Margin of the level against the cavity; none when another criterion decides the fail
+    (a positive margin beside FAIL would mislead)."""
+    if failed and all(c.name != "inside cavity" for c in failed):
+        return None
+    return margin_of(level, depth, "<=")
 
 
 def _not_evaluated(inputs: dict, missing: str) -> CheckResult:
