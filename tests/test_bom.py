@@ -48,7 +48,7 @@ def test_bom_lists_each_joint_once_with_length_and_tightening_torque():
 
 def test_oil_amount_comes_from_the_oil_level_check():
     oil = {"id": "oil_level", "value": 15.0, "details": {"oil_volume_mL": 46.2},
-           "inputs": {}}
+           "inputs": {"A": {"value": 15.0, "unit": "mm"}}}
     rows = bill_of_materials([], [oil], "FD-2", "oil", "SK-1A", "12.9")
     lubricant = next(r for r in rows if r.item == "lubricant")
     assert lubricant.designation == "oil ISO VG68" and lubricant.quantity == "≤ 46 mL"
@@ -58,3 +58,24 @@ def test_oil_amount_comes_from_the_oil_level_check():
 def test_gear_heads_are_factory_filled():
     rows = bill_of_materials([], [], "GH", "grease", "SK-1A", "12.9")
     assert [r.designation for r in rows] == ["grease (factory fill)"]
+
+
+def test_a_grip_without_a_preferred_length_says_how_deep_to_counterbore():
+    # M4, grip 26.8, depth 8: 30.8 … 34.8 holds no preferred length; 30 needs 0.8 mm more sink
+    parts = [{"name": "casing", "bolt_circles": [_circle("spline", "clearance", grip_mm=26.8)]}]
+    row = bill_of_materials(parts, [], "FD-2", "oil", "SK-1A", "12.9")[0]
+    assert row.designation == "ISO 4762 M4×?-12.9"
+    assert "deepen the counterbores by 0.8 mm for M4×30" in row.note
+
+
+def test_every_fd_casing_takes_a_preferred_length_spline_screw(catalog):
+    pytest.importorskip("cadquery")
+    from hdcad.geometry.fd_casing import FDCasingHalf
+    from hdcad.geometry.standards import ISO_4762_HEAD_MM
+    for size in FDCasingHalf.sizes(catalog):
+        part = FDCasingHalf(size, catalog, side="S").build()
+        circle = next(b for b in part.bolt_circles if b.name == "spline_screws")
+        assert screw_length_mm(circle.thread, circle.grip_mm, circle.depth_mm), size
+        # the head still sinks fully below the face the user's gear sits on
+        sink = part.dimensions["counterbore_depth_mm"]
+        assert sink >= ISO_4762_HEAD_MM[circle.thread][1], size

@@ -33,7 +33,8 @@ import cadquery as cq
 from ..catalog import Catalog
 from ..design_options import DesignOptions
 from .part import BoltCircle, Part
-from .standards import DIN_974_1_CBORE_MM, ISO_273_MEDIUM_MM, ISO_4762_HEAD_MM, TAP_DRILL_MM
+from .standards import (DIN_974_1_CBORE_MM, ISO_273_MEDIUM_MM, ISO_4762_HEAD_MM,
+                        ISO_4762_LENGTHS_MM, TAP_DRILL_MM)
 
 BEARING_TABLE = "deep_groove_bearing_iso15"   # ISO 15 60xx rows (catalog, standard data)
 SEAL_TABLE = "shaft_seal_iso6194"             # ISO 6194-1 / DIN 3760 rows (catalog)
@@ -210,6 +211,17 @@ class FDCasingHalf:
                              + self.options.wall_mm, fd0["M_depth_mm"] + MIN_FLOOR_MM)
         self.floor = max(self.room, self.floor_min)
         self.thickness = self.pilot_depth + self.floor
+        self.cbore_depth = self.floor - self._grip()
+
+    def _grip(self) -> float:
+        """Grip [mm] under the spline-screw heads: the counterbore is sunk just deep enough
+        for the longest ISO 4762 preferred length that engages ≥ 1·d and does not bottom in
+        the spline's K-deep thread (a floor this thick would otherwise need special screws)."""
+        d, depth = _thread_d(self.screw), self.fd2["K_depth_mm"]
+        grip_max = self.floor - (ISO_4762_HEAD_MM[self.screw][1] + CBORE_SINK_MM)
+        # a length l fits some grip g ≤ grip_max with d ≤ l − g ≤ depth iff l − depth ≤ grip_max
+        length = max((l for l in ISO_4762_LENGTHS_MM if l - depth <= grip_max), default=None)
+        return grip_max if length is None else min(grip_max, length - d)
 
     def _check_rings(self) -> None:
         fd0, fd2, label = self.fd0, self.fd2, self.label
@@ -347,8 +359,9 @@ class FDCasingHalf:
             f"the bearing, lip towards the oil; recess Ø{self.seal_od:g} × {self.seal_depth:g} "
             f"(b + {SEAL_DEPTH_ALLOWANCE_MM:g} mm) below the spigot recess",
             f"{self.screw} clearance holes Ø{self.clearance:g} (ISO 273 medium), counterbore "
-            f"Ø{self.cbore:g} (DIN 974-1) × {self.cbore_depth:g} (ISO 4762 k + "
-            f"{CBORE_SINK_MM:g} mm) from the outer face; grip length "
+            f"Ø{self.cbore:g} (DIN 974-1) × {self.cbore_depth:g} from the outer face (at least "
+            f"ISO 4762 k + {CBORE_SINK_MM:g} mm, sunk deeper so that a preferred screw length "
+            f"fits); grip length "
             f"{self.floor - self.cbore_depth:g} mm + at most {fd2['K_depth_mm']:g} mm thread in "
             "the spline; holes at 0°",
             f"gear_mount: {self.gear_thread} modelled as tap-drill Ø{self.tap_drill:g} (ISO 2306"

@@ -44,6 +44,17 @@ def screw_length_mm(thread: str, grip_mm: float, tapped_depth_mm: float) -> floa
     return next((float(l) for l in ISO_4762_LENGTHS_MM if low <= l <= high), None)
 
 
+def _no_length_hint(circle: dict) -> str:
+    """What to do when no preferred length fits: the counterbore depth that makes one fit."""
+    low = circle["grip_mm"] + ENGAGEMENT_FACTOR * thread_d(circle["thread"])
+    shorter = max((l for l in ISO_4762_LENGTHS_MM if l < low), default=None)
+    text = "no ISO 4762 preferred length between grip + 1·d and grip + thread depth"
+    if shorter is None:
+        return text
+    return (f"{text}: deepen the counterbores by {low - shorter:.1f} mm for "
+            f"{circle['thread']}×{shorter:g}, or use a special length")
+
+
 def screw_rows(part_name: str, circles: list[dict], tightening_Nm: dict[str, float],
                bolt_class: str) -> list[BomRow]:
     """One row per bolt circle: the hdcad screws for clearance holes, the user's for tapped."""
@@ -55,12 +66,11 @@ def screw_rows(part_name: str, circles: list[dict], tightening_Nm: dict[str, flo
         ma = f"; tighten to M_A = {torque:.1f} N·m (VDI 2230, µ = 0.12)" if torque else ""
         if c["kind"] == "clearance" and c.get("grip_mm") is not None:
             length = screw_length_mm(c["thread"], c["grip_mm"], c["depth_mm"] or 0.0)
-            size = (f"{c['thread']}×{length:g}" if length else
-                    f"{c['thread']} (no preferred length between grip + 1·d and grip + thread "
-                    "depth: choose a special length)")
+            size = f"{c['thread']}×{length:g}" if length else f"{c['thread']}×?"
             rows.append(BomRow("screws", f"ISO 4762 {size}-{bolt_class}", str(c["count"]),
                                part_name, f"{c['name']} on Ø{c['diameter_mm']:g}; grip "
-                               f"{c['grip_mm']:.1f} mm, thread depth {c['depth_mm']:g} mm{ma}"))
+                               f"{c['grip_mm']:.1f} mm, thread depth {c['depth_mm']:g} mm"
+                               + ("" if length else "; " + _no_length_hint(c)) + ma))
         else:
             holes = "tapped holes" if c["kind"] == "tapped" else "clearance holes"
             rows.append(BomRow("screws", f"ISO 4762 {c['thread']}-{bolt_class}", str(c["count"]),
@@ -120,7 +130,7 @@ def bill_of_materials(parts: list[dict], checks: list[dict], family: str, lubric
                         p.get("note", "")) for p in part.get("purchased", [])]
     oil = next((c for c in checks if c["id"] == "oil_level"), None)
     volume = oil["details"].get("oil_volume_mL") if oil else None
-    level = oil["value"] if oil else None
+    level = oil["inputs"].get("A", {}).get("value") if oil else None
     sealing = sealing_row(family)
     rows += [sealing] if sealing else []
     rows.append(lubricant_row(family, lubrication, grease, volume, level, grease_g))
