@@ -42,11 +42,12 @@ from ..catalog import Catalog
 from ..design_options import DesignOptions
 from .fd_casing import (BEARING_TABLE, CBORE_SINK_MM, EDGE_MARGIN_MM, MIN_FLOOR_MM,
                         SEAL_DEPTH_ALLOWANCE_MM, SEAL_TABLE, SHAFT_CLEARANCE_MM, _check_ring,
-                        _cylinder, _ring, bearing_dimensions, seal_dimensions)
-from .flanges import TAP_RUNOUT_PITCHES, _single_solid, thread_diameter
+                        bearing_dimensions, seal_dimensions)
+from .flanges import TAP_RUNOUT_PITCHES
 from .part import BoltCircle, Part
+from .primitives import cylinder, ring_points, single_solid
 from .standards import (DIN_974_1_CBORE_MM, ISO_261_PITCH_MM, ISO_273_MEDIUM_MM,
-                        ISO_4762_HEAD_MM, TAP_DRILL_MM)
+                        ISO_4762_HEAD_MM, TAP_DRILL_MM, thread_diameter)
 
 OUTLINE, HOUSING = "component_outline", "component_housing"
 SERIES = ("CSF", "CSG")
@@ -253,30 +254,30 @@ class ComponentSetHousing:
     def _housing(self) -> Part:
         o = self.outline
         z0, z1 = -self.recess_depth, self.z_out
-        cutters = [_cylinder(o["cs_outer_diameter_mm"], z0 - 1, 0),
-                   _cylinder(self.cavity_d, -1, self.z_wall),
-                   _cylinder(self.out_D, self.z_wall - 1, self.z_shoulder),
-                   _cylinder(self.out_d + 2 * SHAFT_CLEARANCE_MM, self.z_shoulder - 1, z1 + 1),
-                   _cylinder(self.out_seal[0], z1 - self.out_seal_depth, z1 + 1)]
-        cutters += [_cylinder(self.cs_tap, -1, self.cs_drill, x, y)
-                    for x, y in _ring(o["cs_bolt_circle_mm"], self.cs_count, 0.0)]
-        shape = _single_solid(_cylinder(self.housing_od, z0, z1), cutters, self.label)
+        cutters = [cylinder(o["cs_outer_diameter_mm"], z0 - 1, 0),
+                   cylinder(self.cavity_d, -1, self.z_wall),
+                   cylinder(self.out_D, self.z_wall - 1, self.z_shoulder),
+                   cylinder(self.out_d + 2 * SHAFT_CLEARANCE_MM, self.z_shoulder - 1, z1 + 1),
+                   cylinder(self.out_seal[0], z1 - self.out_seal_depth, z1 + 1)]
+        cutters += [cylinder(self.cs_tap, -1, self.cs_drill, x, y)
+                    for x, y in ring_points(o["cs_bolt_circle_mm"], self.cs_count, 0.0)]
+        shape = single_solid(cylinder(self.housing_od, z0, z1), cutters, self.label)
         return Part("housing", shape, COLORS["housing"], dimensions=self._housing_dims(),
                     bolt_circles=[self._cs_circle()], notes=self._notes(),
                     purchased=self._purchased("housing"))
 
     def _input_cover(self) -> Part:
         o, t, depth = self.outline, self.cover_t, self.cover_cavity_depth
-        body = _cylinder(o["cs_outer_diameter_mm"], 0, SPIGOT_MM).fuse(
-            _cylinder(self.housing_od, SPIGOT_MM, t))
-        cutters = [_cylinder(self.cover_cavity_d, -1, depth),
-                   _cylinder(self.in_D, depth - 1, depth + self.in_B),
-                   _cylinder(self.in_d + 2 * SHAFT_CLEARANCE_MM, depth, t + 1),
-                   _cylinder(self.in_seal[0], t - self.in_seal_depth, t + 1)]
-        for x, y in _ring(o["cs_bolt_circle_mm"], self.cs_count, 0.0):
-            cutters += [_cylinder(self.clearance, -1, t + 1, x, y),
-                        _cylinder(self.cbore, t - self.cbore_depth, t + 1, x, y)]
-        shape = _single_solid(body, cutters, self.label)
+        body = cylinder(o["cs_outer_diameter_mm"], 0, SPIGOT_MM).fuse(
+            cylinder(self.housing_od, SPIGOT_MM, t))
+        cutters = [cylinder(self.cover_cavity_d, -1, depth),
+                   cylinder(self.in_D, depth - 1, depth + self.in_B),
+                   cylinder(self.in_d + 2 * SHAFT_CLEARANCE_MM, depth, t + 1),
+                   cylinder(self.in_seal[0], t - self.in_seal_depth, t + 1)]
+        for x, y in ring_points(o["cs_bolt_circle_mm"], self.cs_count, 0.0):
+            cutters += [cylinder(self.clearance, -1, t + 1, x, y),
+                        cylinder(self.cbore, t - self.cbore_depth, t + 1, x, y)]
+        shape = single_solid(body, cutters, self.label)
         return Part("input_cover", shape, COLORS["input_cover"],
                     dimensions=self._cover_dims(), bolt_circles=[self._cover_circle()],
                     notes=self._notes(), purchased=self._purchased("input_cover"))
@@ -287,9 +288,9 @@ class ComponentSetHousing:
         body = (cq.Workplane("XY").circle(boss / 2).extrude(self.flange_t)
                 .faces("<Z").edges().fillet(self.flange_r)
                 .faces(">Z").workplane().circle(self.out_d / 2).extrude(self.journal_len))
-        cutters = [_cylinder(self.fs_tap, -1, self.fs_drill, x, y)
-                   for x, y in _ring(o["fs_bolt_circle_mm"], self.fs_count, 0.0)]
-        shape = _single_solid(body.val(), cutters, self.label)
+        cutters = [cylinder(self.fs_tap, -1, self.fs_drill, x, y)
+                   for x, y in ring_points(o["fs_bolt_circle_mm"], self.fs_count, 0.0)]
+        shape = single_solid(body.val(), cutters, self.label)
         return Part("output_flange", shape, COLORS["output_flange"],
                     dimensions=self._flange_dims(), bolt_circles=[self._fs_circle()],
                     notes=self._notes())

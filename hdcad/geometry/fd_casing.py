@@ -28,13 +28,12 @@ from __future__ import annotations
 
 import math
 
-import cadquery as cq
-
 from ..catalog import Catalog
 from ..design_options import DesignOptions
 from .part import BoltCircle, Part
+from .primitives import cylinder, polar, ring_points, single_solid
 from .standards import (DIN_974_1_CBORE_MM, ISO_273_MEDIUM_MM, ISO_4762_HEAD_MM,
-                        ISO_4762_LENGTHS_MM, TAP_DRILL_MM)
+                        ISO_4762_LENGTHS_MM, TAP_DRILL_MM, thread_diameter)
 
 BEARING_TABLE = "deep_groove_bearing_iso15"   # ISO 15 60xx rows (catalog, standard data)
 SEAL_TABLE = "shaft_seal_iso6194"             # ISO 6194-1 / DIN 3760 rows (catalog)
@@ -56,11 +55,6 @@ CBORE_SINK_MM = 0.5        # screw head sits this far below the outer face (gear
 MIN_FLOOR_MM = 3.0         # least material below a blind tapped hole
 PLUG_ANGLE_STEP_DEG = 0.5  # search step for the oil-hole angle between the bolt holes
 COLORS = {"S": (0.62, 0.66, 0.72), "D": (0.52, 0.58, 0.68)}
-
-
-def _thread_d(thread: str) -> float:
-    """Nominal diameter of a metric thread ("M5" → 5.0, "M10×1" → 10.0)."""
-    return float(thread[1:].split("×")[0])
 
 
 def _table_value(table: dict, key, what: str):
@@ -98,19 +92,6 @@ def seal_dimensions(catalog: Catalog, shaft_mm: float) -> tuple[float, float]:
         raise ValueError(f"no shaft seal for a {shaft_mm:g} mm shaft in catalog table "
                          f"{SEAL_TABLE}; shafts: {known}")
     return row["d2_mm"], row["b_mm"]
-
-
-def _cylinder(diameter: float, z0: float, z1: float, x: float = 0.0, y: float = 0.0) -> cq.Solid:
-    return cq.Solid.makeCylinder(diameter / 2, z1 - z0, cq.Vector(x, y, z0))
-
-
-def _polar(radius: float, angle_deg: float) -> tuple[float, float]:
-    a = math.radians(angle_deg)
-    return radius * math.cos(a), radius * math.sin(a)
-
-
-def _ring(ring_d: float, count: int, start_deg: float) -> list[tuple[float, float]]:
-    return [_polar(ring_d / 2, start_deg + 360.0 * i / count) for i in range(count)]
 
 
 def _check_ring(label: str, ring_d: float, count: int, hole_d: float, inner_d: float,
@@ -217,7 +198,7 @@ class FDCasingHalf:
         """Grip [mm] under the spline-screw heads: the counterbore is sunk just deep enough
         for the longest ISO 4762 preferred length that engages ≥ 1·d and does not bottom in
         the spline's K-deep thread (a floor this thick would otherwise need special screws)."""
-        d, depth = _thread_d(self.screw), self.fd2["K_depth_mm"]
+        d, depth = thread_diameter(self.screw), self.fd2["K_depth_mm"]
         grip_max = self.floor - (ISO_4762_HEAD_MM[self.screw][1] + CBORE_SINK_MM)
         # a length l fits some grip g ≤ grip_max with d ≤ l − g ≤ depth iff l − depth ≤ grip_max
         length = max((l for l in ISO_4762_LENGTHS_MM if l - depth <= grip_max), default=None)
@@ -235,9 +216,9 @@ class FDCasingHalf:
         _check_ring(f"{label} spline_screws counterbore", fd2["I_mm"], fd2["J_count"],
                     self.cbore, fd0["B_H7_mm"], fd0["A_mm"], CBORE_WALL_MIN_MM)
         _check_ring(f"{label} gear_mount", fd0["K_mm"], fd0["L_count"],
-                    _thread_d(self.gear_thread), fd0["B_H7_mm"], fd0["A_mm"])
+                    thread_diameter(self.gear_thread), fd0["B_H7_mm"], fd0["A_mm"])
         slack = min(_slack(x, y, self.cbore / 2, self._gear_holes())
-                    for x, y in _ring(fd2["I_mm"], fd2["J_count"], 0.0))
+                    for x, y in ring_points(fd2["I_mm"], fd2["J_count"], 0.0))
         if slack < EDGE_MARGIN_MM:
             raise ValueError(f"{label}: the gear_mount holes on Ø{fd0['K_mm']:g} cut the "
                              f"spline-screw counterbores on Ø{fd2['I_mm']:g}")
@@ -247,8 +228,8 @@ class FDCasingHalf:
         return 180.0 / self.fd0["L_count"]
 
     def _gear_holes(self) -> list[tuple[float, float, float]]:
-        r = _thread_d(self.gear_thread) / 2
-        return [(x, y, r) for x, y in _ring(self.fd0["K_mm"], self.fd0["L_count"],
+        r = thread_diameter(self.gear_thread) / 2
+        return [(x, y, r) for x, y in ring_points(self.fd0["K_mm"], self.fd0["L_count"],
                                             self._gear_start_deg())]
 
     def _place_oil_plug(self) -> None:
@@ -261,9 +242,9 @@ class FDCasingHalf:
             raise ValueError(f"{self.label}: oil hole at radius {self.plug_r:g} does not open "
                              f"into the Ø{self.fd2['A_g7_mm']:g} spline cavity")
         holes = self._gear_holes() + [(x, y, self.cbore / 2) for x, y in
-                                      _ring(self.fd2["I_mm"], self.fd2["J_count"], 0.0)]
+                                      ring_points(self.fd2["I_mm"], self.fd2["J_count"], 0.0)]
         steps = int(360 / PLUG_ANGLE_STEP_DEG)
-        best = max((_slack(*_polar(self.plug_r, i * PLUG_ANGLE_STEP_DEG), half, holes),
+        best = max((_slack(*polar(self.plug_r, i * PLUG_ANGLE_STEP_DEG), half, holes),
                     i * PLUG_ANGLE_STEP_DEG) for i in range(steps))
         if best[0] < EDGE_MARGIN_MM:
             raise ValueError(f"{self.label}: no room for the {OIL_PLUG_THREAD} oil hole at "
@@ -276,23 +257,21 @@ class FDCasingHalf:
         p, t = self.pilot_depth, self.thickness
         seal_top = t - SPIGOT_DEPTH_MM
         cutters = [
-            _cylinder(fd2["A_g7_mm"], -1, p),                           # pilot recess
-            _cylinder(self.bearing_od, p - 1, p + self.bearing_w),      # bearing seat
-            _cylinder(self.shaft_hole, p - 1, t + 1),                   # shaft passage
-            _cylinder(self.seal_od, seal_top - self.seal_depth, seal_top + 1),
-            _cylinder(fd0["B_H7_mm"], seal_top, t + 1),                 # spigot recess
-            _cylinder(OIL_PLUG_TAP_DRILL_MM, p - 1, t + 1,
-                      *_polar(self.plug_r, self.plug_angle)),
+            cylinder(fd2["A_g7_mm"], -1, p),                           # pilot recess
+            cylinder(self.bearing_od, p - 1, p + self.bearing_w),      # bearing seat
+            cylinder(self.shaft_hole, p - 1, t + 1),                   # shaft passage
+            cylinder(self.seal_od, seal_top - self.seal_depth, seal_top + 1),
+            cylinder(fd0["B_H7_mm"], seal_top, t + 1),                 # spigot recess
+            cylinder(OIL_PLUG_TAP_DRILL_MM, p - 1, t + 1,
+                      *polar(self.plug_r, self.plug_angle)),
         ]
-        for x, y in _ring(fd2["I_mm"], fd2["J_count"], 0.0):
-            cutters += [_cylinder(self.clearance, p - 1, t + 1, x, y),
-                        _cylinder(self.cbore, t - self.cbore_depth, t + 1, x, y)]
+        for x, y in ring_points(fd2["I_mm"], fd2["J_count"], 0.0):
+            cutters += [cylinder(self.clearance, p - 1, t + 1, x, y),
+                        cylinder(self.cbore, t - self.cbore_depth, t + 1, x, y)]
         for x, y, _ in self._gear_holes():
-            cutters.append(_cylinder(self.tap_drill, t - fd0["M_depth_mm"], t + 1, x, y))
-        solids = _cylinder(fd0["A_mm"], 0, t).cut(*cutters).clean().Solids()
-        if len(solids) != 1:
-            raise ValueError(f"{self.label}: the cut left {len(solids)} solids instead of one")
-        return Part(name=f"casing_half_{self.side}", shape=cq.Workplane("XY").add(solids[0]),
+            cutters.append(cylinder(self.tap_drill, t - fd0["M_depth_mm"], t + 1, x, y))
+        return Part(name=f"casing_half_{self.side}",
+                    shape=single_solid(cylinder(fd0["A_mm"], 0, t), cutters, self.label),
                     color=COLORS[self.side], dimensions=self._dimensions(),
                     bolt_circles=self._bolt_circles(), notes=self._notes(),
                     purchased=self._purchased())

@@ -19,8 +19,9 @@ import cadquery as cq
 from ..catalog import Catalog
 from ..design_options import DesignOptions
 from .part import BoltCircle, Part
+from .primitives import cylinder, ring_points, single_solid
 from .standards import (DIN_974_1_CBORE_MM, ISO_261_PITCH_MM, ISO_273_MEDIUM_MM, ISO_4762_HEAD_MM,
-                        TAP_DRILL_MM)
+                        TAP_DRILL_MM, thread_diameter)
 
 # ---------------------------------------------------------------------------------------------
 # Design choices (not catalog data); each is printed in the Part notes where it is used.
@@ -37,14 +38,6 @@ MOTOR_HOLE_COUNT = 4         # not in the seed tables; IEC 60072-1 FF/FT flanges
 MOTOR_HOLE_START_DEG = 45.0  # holes on the diagonals, where a square flange has room
 DRIVE_FLANGE_COLOR = (0.80, 0.62, 0.30)
 MOTOR_FLANGE_COLOR = (0.62, 0.66, 0.72)
-
-
-def thread_diameter(thread: str) -> float:
-    """Nominal diameter of an ISO metric coarse thread ("M5" → 5.0); ValueError if not tabled."""
-    if thread not in ISO_261_PITCH_MM:
-        raise ValueError(f"thread {thread!r} is not in the ISO 261 table of hdcad.geometry.flanges; "
-                         f"known: {', '.join(ISO_261_PITCH_MM)}")
-    return float(thread[1:])
 
 
 def check_ring(label: str, ring_d: float, count: int, hole_d: float, inner_d: float,
@@ -70,23 +63,6 @@ def check_ring(label: str, ring_d: float, count: int, hole_d: float, inner_d: fl
     if pitch < hole_d + m:
         raise ValueError(f"{label}: {count} holes Ø{hole_d:g} on Ø{ring_d:g} overlap their "
                          f"neighbours (pitch {pitch:.2f} mm)")
-
-
-def _cylinder(diameter: float, z0: float, z1: float, x: float = 0.0, y: float = 0.0) -> cq.Solid:
-    return cq.Solid.makeCylinder(diameter / 2, z1 - z0, cq.Vector(x, y, z0))
-
-
-def _ring_points(ring_d: float, count: int, start_deg: float) -> list[tuple[float, float]]:
-    angles = (math.radians(start_deg + 360.0 * i / count) for i in range(count))
-    return [(ring_d / 2 * math.cos(a), ring_d / 2 * math.sin(a)) for a in angles]
-
-
-def _single_solid(body: cq.Shape, cutters: list[cq.Shape], label: str) -> cq.Workplane:
-    """body minus cutters as one clean solid; ValueError if the cut split or emptied it."""
-    solids = body.cut(*cutters).clean().Solids()
-    if len(solids) != 1:
-        raise ValueError(f"{label}: the cut left {len(solids)} solids instead of one")
-    return cq.Workplane("XY").add(solids[0])
 
 
 def _missing(row: dict, columns: tuple[str, ...]) -> list[str]:
@@ -149,13 +125,13 @@ class FDDriveFlange:
 
     def build(self) -> Part:
         t, top = self.thickness, self.thickness + self.hub_length
-        body = _cylinder(self.outer, 0, t).fuse(
-            _cylinder(self.pilot, -PILOT_BOSS_HEIGHT_MM, 0), _cylinder(self.pilot, t, top))
-        cutters = [_cylinder(self.bore, -PILOT_BOSS_HEIGHT_MM - 1, top + 1)]
-        for x, y in _ring_points(self.ring, self.count, 0.0):
-            cutters += [_cylinder(self.hole, -1, t + 1, x, y),
-                        _cylinder(self.cbore, t - self.cbore_depth, t + 1, x, y)]
-        return Part(name="drive_flange", shape=_single_solid(body, cutters, self.label),
+        body = cylinder(self.outer, 0, t).fuse(
+            cylinder(self.pilot, -PILOT_BOSS_HEIGHT_MM, 0), cylinder(self.pilot, t, top))
+        cutters = [cylinder(self.bore, -PILOT_BOSS_HEIGHT_MM - 1, top + 1)]
+        for x, y in ring_points(self.ring, self.count, 0.0):
+            cutters += [cylinder(self.hole, -1, t + 1, x, y),
+                        cylinder(self.cbore, t - self.cbore_depth, t + 1, x, y)]
+        return Part(name="drive_flange", shape=single_solid(body, cutters, self.label),
                     color=DRIVE_FLANGE_COLOR, dimensions=self._dimensions(),
                     bolt_circles=[self._bolt_circle()], notes=self._notes())
 
@@ -304,12 +280,12 @@ class GHMotorFlange:
             body = cq.Solid.makeBox(self.square, self.square, t,
                                     cq.Vector(-self.square / 2, -self.square / 2, 0))
         else:
-            body = _cylinder(self.outer, 0, t)
-        cutters = [_cylinder(self.bore, -1, t + 1),
-                   _cylinder(self.pilot, t - self.pilot_depth, t + 1)]
-        for x, y in _ring_points(self.ring, MOTOR_HOLE_COUNT, MOTOR_HOLE_START_DEG):
-            cutters.append(_cylinder(self.tap_drill, t - self.drill_depth, t + 1, x, y))
-        return Part(name="motor_flange", shape=_single_solid(body, cutters, self.label),
+            body = cylinder(self.outer, 0, t)
+        cutters = [cylinder(self.bore, -1, t + 1),
+                   cylinder(self.pilot, t - self.pilot_depth, t + 1)]
+        for x, y in ring_points(self.ring, MOTOR_HOLE_COUNT, MOTOR_HOLE_START_DEG):
+            cutters.append(cylinder(self.tap_drill, t - self.drill_depth, t + 1, x, y))
+        return Part(name="motor_flange", shape=single_solid(body, cutters, self.label),
                     color=MOTOR_FLANGE_COLOR, dimensions=self._dimensions(),
                     bolt_circles=[BoltCircle("motor screws", self.ring, MOTOR_HOLE_COUNT,
                                              self.tap_drill, self.thread, "tapped",

@@ -12,6 +12,7 @@ import cadquery as cq
 
 from .fd_casing import SHAFT_CLEARANCE_MM
 from .part import Part
+from .primitives import cylinder
 
 
 @dataclass
@@ -36,8 +37,7 @@ def fd_casing_cavity(parts: list[Part]) -> OilCavity:
              else p.offset_z_mm + p.dimensions["pilot_depth_mm"]) for p in halves]
     z0, z1 = min(ends), max(ends)
     shaft = min(p.dimensions["shaft_hole_mm"] for p in halves) - 2 * SHAFT_CLEARANCE_MM
-    solid = (cq.Solid.makeCylinder(pilot / 2, z1 - z0, cq.Vector(0, 0, z0))
-             .cut(cq.Solid.makeCylinder(shaft / 2, z1 - z0, cq.Vector(0, 0, z0))))
+    solid = cylinder(pilot, z0, z1).cut(cylinder(shaft, z0, z1))
     return OilCavity(solid, pilot / 2, shaft,
                      " at most: the space inside the casing halves (pilot recesses) less the "
                      "shaft; the component set's own volume below the level is not in the "
@@ -78,19 +78,15 @@ def component_set_cavity(parts: list[Part]) -> OilCavity:
     cs_face = cover.offset_z_mm  # the cover is flipped: its mating face sits on the CS face
     d_cover, depth = cover.dimensions["cavity_diameter_mm"], cover.dimensions["cavity_depth_mm"]
     d_housing = housing["cavity_diameter_mm"]
-    pieces = [_cylinder(d_housing, housing["cavity_z0_mm"], housing["cavity_z1_mm"]),
-              _cylinder(d_cover, cs_face - depth, cs_face),
-              _cylinder(min(d_housing, d_cover), cs_face, 0.0)]
+    pieces = [cylinder(d_housing, housing["cavity_z0_mm"], housing["cavity_z1_mm"]),
+              cylinder(d_cover, cs_face - depth, cs_face),
+              cylinder(min(d_housing, d_cover), cs_face, 0.0)]
     shaft = cover.dimensions["shaft_hole_mm"] - 2 * SHAFT_CLEARANCE_MM
     solid = pieces[0].fuse(*pieces[1:]).cut(
         by_name["output_flange"].placed(),
-        _cylinder(shaft, cs_face - depth, housing["cavity_z1_mm"])).clean()
+        cylinder(shaft, cs_face - depth, housing["cavity_z1_mm"])).clean()
     seal_shaft = max(shaft, housing["shaft_hole_mm"] - 2 * SHAFT_CLEARANCE_MM)
     return OilCavity(solid, max(d_housing, d_cover) / 2, seal_shaft,
                      " at most: housing and cover cavities and the circular-spline bore less "
                      "the output flange and the input shaft; the gear's own volume below the "
                      "level is not in the overlay tables and is not subtracted")
-
-
-def _cylinder(diameter: float, z0: float, z1: float) -> cq.Shape:
-    return cq.Solid.makeCylinder(diameter / 2, z1 - z0, cq.Vector(0, 0, z0))

@@ -30,3 +30,12 @@ ISO_4762_LENGTHS_MM = (6, 8, 10, 12, 16, 20, 25, 30, 35, 40, 45, 50, 55, 60, 65,
                        100, 110, 120, 130, 140, 150, 160, 180, 200)
 """ISO 4762 preferred nominal lengths l [mm] (the range M3-M24 covers; not every length exists
 for every size, e.g. M3 stops at 30 and M24 starts at 40: ask the supplier)."""
+
+
+def thread_diameter(thread: str) -> float:
+    """Nominal diameter [mm] of an ISO metric coarse thread ("M5" → 5.0); ValueError naming
+    the known threads if it is not in the ISO 261 table above."""
+    if thread not in ISO_261_PITCH_MM:
+        raise ValueError(f"thread {thread!r} is not in the ISO 261 table of "
+                         f"hdcad.geometry.standards; known: {', '.join(ISO_261_PITCH_MM)}")
+    return float(thread[1:])

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, asdict
 
-from ..geometry.standards import ISO_4762_LENGTHS_MM
+from ..geometry.standards import ISO_4762_LENGTHS_MM, thread_diameter
 
 ENGAGEMENT_FACTOR = 1.0  # least engagement in steel as a multiple of d (bolt_pattern check)
 
@@ -32,21 +32,16 @@ class BomRow:
         return asdict(self)
 
 
-def thread_d(thread: str) -> float:
-    """Nominal diameter [mm] of a metric thread ("M5" → 5, "M10×1" → 10)."""
-    return float(thread[1:].split("×")[0])
-
-
 def screw_length_mm(thread: str, grip_mm: float, tapped_depth_mm: float) -> float | None:
     """Shortest ISO 4762 length with 1·d engagement that does not bottom; None if none fits."""
-    low = grip_mm + ENGAGEMENT_FACTOR * thread_d(thread)
+    low = grip_mm + ENGAGEMENT_FACTOR * thread_diameter(thread)
     high = grip_mm + tapped_depth_mm
     return next((float(l) for l in ISO_4762_LENGTHS_MM if low <= l <= high), None)
 
 
 def _no_length_hint(circle: dict) -> str:
     """What to do when no preferred length fits: the counterbore depth that makes one fit."""
-    low = circle["grip_mm"] + ENGAGEMENT_FACTOR * thread_d(circle["thread"])
+    low = circle["grip_mm"] + ENGAGEMENT_FACTOR * thread_diameter(circle["thread"])
     shorter = max((l for l in ISO_4762_LENGTHS_MM if l < low), default=None)
     text = "no ISO 4762 preferred length between grip + 1·d and grip + thread depth"
     if shorter is None:

@@ -1,0 +1,30 @@
+"""Shape helpers every part family uses: cylinders on Z, hole rings, one clean solid."""
+
+from __future__ import annotations
+
+import math
+
+import cadquery as cq
+
+
+def cylinder(diameter: float, z0: float, z1: float, x: float = 0.0, y: float = 0.0) -> cq.Solid:
+    """A cylinder of ``diameter`` [mm] parallel to Z from z0 to z1, centred on (x, y)."""
+    return cq.Solid.makeCylinder(diameter / 2, z1 - z0, cq.Vector(x, y, z0))
+
+
+def polar(radius: float, angle_deg: float) -> tuple[float, float]:
+    a = math.radians(angle_deg)
+    return radius * math.cos(a), radius * math.sin(a)
+
+
+def ring_points(ring_d: float, count: int, start_deg: float) -> list[tuple[float, float]]:
+    """Centres of ``count`` evenly spaced holes on Ø ring_d, the first at start_deg."""
+    return [polar(ring_d / 2, start_deg + 360.0 * i / count) for i in range(count)]
+
+
+def single_solid(body: cq.Shape, cutters: list[cq.Shape], label: str) -> cq.Workplane:
+    """body minus cutters as one clean solid; ValueError if the cut split or emptied it."""
+    solids = body.cut(*cutters).clean().Solids()
+    if len(solids) != 1:
+        raise ValueError(f"{label}: the cut left {len(solids)} solids instead of one")
+    return cq.Workplane("XY").add(solids[0])
