@@ -29,6 +29,7 @@ from __future__ import annotations
 import math
 
 from ..catalog import Catalog
+from ..checks.bolts import MIN_ENGAGEMENT
 from ..design_options import DesignOptions
 from .part import BoltCircle, Part
 from .primitives import cylinder, polar, ring_points, single_solid
@@ -196,13 +197,15 @@ class FDCasingHalf:
 
     def _grip(self) -> float:
         """Grip [mm] under the spline-screw heads: the counterbore is sunk just deep enough
-        for the longest ISO 4762 preferred length that engages ≥ 1·d and does not bottom in
+        for the longest ISO 4762 preferred length that engages ≥ k_m·d and does not bottom in
         the spline's K-deep thread (a floor this thick would otherwise need special screws)."""
-        d, depth = thread_diameter(self.screw), self.fd2["K_depth_mm"]
+        # the screws thread into the steel circular spline: least engagement as in bolt_pattern
+        m_min = MIN_ENGAGEMENT["steel"] * thread_diameter(self.screw)
+        depth = self.fd2["K_depth_mm"]
         grip_max = self.floor - (ISO_4762_HEAD_MM[self.screw][1] + CBORE_SINK_MM)
-        # a length l fits some grip g ≤ grip_max with d ≤ l − g ≤ depth iff l − depth ≤ grip_max
+        # l fits some grip g ≤ grip_max with m_min ≤ l − g ≤ depth iff l − depth ≤ grip_max
         length = max((l for l in ISO_4762_LENGTHS_MM if l - depth <= grip_max), default=None)
-        return grip_max if length is None else min(grip_max, length - d)
+        return grip_max if length is None else min(grip_max, length - m_min)
 
     def _check_rings(self) -> None:
         fd0, fd2, label = self.fd0, self.fd2, self.label

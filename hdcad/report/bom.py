@@ -1,7 +1,7 @@
 """Bill of materials of a generated design: screws, bought parts, lubricant.
 
 Screw length for a clearance bolt circle: the shortest ISO 4762 preferred length that
-reaches the design engagement (1·d in steel, as in the bolt_pattern check) past the grip,
+reaches the least engagement the bolt_pattern check asked for (k_m·d) past the grip,
 and no longer than grip + tapped depth (the screw must not bottom in its hole).
 The tightening torque M_A is the one the bolt_pattern check used (VDI 2230).
 
@@ -15,9 +15,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass, asdict
 
+from ..checks.bolts import MIN_ENGAGEMENT
 from ..geometry.standards import ISO_4762_LENGTHS_MM, thread_diameter
-
-ENGAGEMENT_FACTOR = 1.0  # least engagement in steel as a multiple of d (bolt_pattern check)
 
 
 @dataclass
@@ -32,47 +31,64 @@ class BomRow:
         return asdict(self)
 
 
-def screw_length_mm(thread: str, grip_mm: float, tapped_depth_mm: float) -> float | None:
-    """Shortest ISO 4762 length with 1·d engagement that does not bottom; None if none fits."""
-    low = grip_mm + ENGAGEMENT_FACTOR * thread_diameter(thread)
+def screw_length_mm(thread: str, grip_mm: float, tapped_depth_mm: float,
+                    min_engagement_mm: float | None = None) -> float | None:
+    """Shortest ISO 4762 length that engages ``min_engagement_mm`` (default: steel, the
+    bolt_pattern check's k_m·d) and does not bottom; None if no preferred length fits."""
+    low = grip_mm + _engagement(thread, min_engagement_mm)
     high = grip_mm + tapped_depth_mm
     return next((float(l) for l in ISO_4762_LENGTHS_MM if low <= l <= high), None)
 
 
-def _no_length_hint(circle: dict) -> str:
+def _engagement(thread: str, min_engagement_mm: float | None) -> float:
+    if min_engagement_mm is not None:
+        return min_engagement_mm
+    return MIN_ENGAGEMENT["steel"] * thread_diameter(thread)
+
+
+def _no_length_hint(thread: str, grip_mm: float, min_engagement_mm: float) -> str:
     """What to do when no preferred length fits: the counterbore depth that makes one fit."""
-    low = circle["grip_mm"] + ENGAGEMENT_FACTOR * thread_diameter(circle["thread"])
+    low = grip_mm + min_engagement_mm
     shorter = max((l for l in ISO_4762_LENGTHS_MM if l < low), default=None)
-    text = "no ISO 4762 preferred length between grip + 1·d and grip + thread depth"
+    text = (f"no ISO 4762 preferred length between grip + {min_engagement_mm:g} mm "
+            "engagement and grip + thread depth")
     if shorter is None:
         return text
     return (f"{text}: deepen the counterbores by {low - shorter:.1f} mm for "
-            f"{circle['thread']}×{shorter:g}, or use a special length")
+            f"{thread}×{shorter:g}, or use a special length")
 
 
-def screw_rows(part_name: str, circles: list[dict], tightening_Nm: dict[str, float],
+def screw_rows(part_name: str, circles: list[dict], joints: dict[str, dict],
                bolt_class: str) -> list[BomRow]:
-    """One row per bolt circle: the hdcad screws for clearance holes, the user's for tapped."""
+    """One row per bolt circle: length for clearance holes with a known grip, else the rule.
+
+    ``joints`` maps "part/circle" to its bolt_pattern record: the tightening torque M_A and
+    the least engagement come from there, so the BOM asks what the check asked.
+    """
     rows = []
     for c in circles:
         if not c.get("in_bom", True):
             continue
-        torque = tightening_Nm.get(f"{part_name}/{c['name']}")
+        joint = joints.get(f"{part_name}/{c['name']}", {})
+        torque = joint.get("inputs", {}).get("M_A", {}).get("value")
+        m_min = _engagement(c["thread"], joint.get("details", {}).get("criteria", {})
+                            .get("engagement", {}).get("limit"))
         ma = f"; tighten to M_A = {torque:.1f} N·m (VDI 2230, µ = 0.12)" if torque else ""
         if c["kind"] == "clearance" and c.get("grip_mm") is not None:
-            length = screw_length_mm(c["thread"], c["grip_mm"], c["depth_mm"] or 0.0)
+            length = screw_length_mm(c["thread"], c["grip_mm"], c["depth_mm"] or 0.0, m_min)
             size = f"{c['thread']}×{length:g}" if length else f"{c['thread']}×?"
+            hint = "" if length else "; " + _no_length_hint(c["thread"], c["grip_mm"], m_min)
             rows.append(BomRow("screws", f"ISO 4762 {size}-{bolt_class}", str(c["count"]),
                                part_name, f"{c['name']} on Ø{c['diameter_mm']:g}; grip "
                                f"{c['grip_mm']:.1f} mm, thread depth {c['depth_mm']:g} mm"
-                               + ("" if length else "; " + _no_length_hint(c)) + ma))
+                               + hint + ma))
         else:
             holes = "tapped holes" if c["kind"] == "tapped" else "clearance holes"
             rows.append(BomRow("screws", f"ISO 4762 {c['thread']}-{bolt_class}", str(c["count"]),
                                part_name, f"{c['name']}: {holes} on Ø{c['diameter_mm']:g}, thread "
                                f"depth {c['depth_mm']:g} mm; length = grip of the mating part "
-                               f"(gear, motor or flexspline flange) + 1·d ≤ grip + thread "
-                               f"depth{ma}"))
+                               f"(gear, motor or flexspline flange) + {m_min:g} mm ≤ grip + "
+                               f"thread depth{ma}"))
     return rows
 
 
@@ -116,11 +132,10 @@ def bill_of_materials(parts: list[dict], checks: list[dict], family: str, lubric
                       grease: str, bolt_class: str, grease_g: float | None = None
                       ) -> list[BomRow]:
     """BOM rows from the results.json parts and check records."""
-    torques = {c["details"].get("name"): c["inputs"]["M_A"]["value"] for c in checks
-               if c["id"] == "bolt_pattern" and "M_A" in c["inputs"]}
+    joints = {c["details"].get("name"): c for c in checks if c["id"] == "bolt_pattern"}
     rows: list[BomRow] = []
     for part in parts:
-        rows += screw_rows(part["name"], part["bolt_circles"], torques, bolt_class)
+        rows += screw_rows(part["name"], part["bolt_circles"], joints, bolt_class)
         rows += [BomRow(p["item"], p["designation"], str(p["quantity"]), part["name"],
                         p.get("note", "")) for p in part.get("purchased", [])]
     oil = next((c for c in checks if c["id"] == "oil_level"), None)
