@@ -24,8 +24,9 @@ import numpy as np
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
 
 import reconcile_truth as truth  # noqa: E402
+from reconcile_cases import run_case  # noqa: E402
 from hdcad.models import resolve  # noqa: E402
-from hdcad.reconcile import COLUMNS, KINDS, read_data, reconcile, validate_data  # noqa: E402
+from hdcad.reconcile import COLUMNS, KINDS, read_data, reconcile  # noqa: E402
 
 FIRST_SEED = 1000     # out of the proof tests' seed range
 RMSE_FACTOR = 1.15    # issue: reconciled RMSE within 15 % of the noise RMS
@@ -39,13 +40,10 @@ def scenarios(kind: str) -> list[tuple[str, ...]]:
 
 
 def run(kind: str, effects: tuple[str, ...], seed: int) -> dict:
-    code = truth.proof_model(kind, effects, seed)
-    data, hidden = truth.make_case(kind, code, effects, seed)
-    catalog = truth.default_catalog()
-    result = reconcile(kind, validate_data(kind, data), resolve(code, catalog), catalog,
-                       load_inertia_kgm2=hidden.get("load_inertia_kgm2")).as_dict()
-    return {"named": tuple(result["missing_effects"]), "before": result["rmse_before"],
-            "after": result["rmse_after"], "noise": hidden["noise_rms"]}
+    case = run_case(kind, effects, seed)
+    result = case["result"]
+    return {"named": case["named"], "before": result["rmse_before"],
+            "after": result["rmse_after"], "noise": case["truth"]["noise_rms"]}
 
 
 def confusion(kind: str, cases: int) -> None:

@@ -20,14 +20,14 @@ import math
 import re
 import statistics
 from collections import Counter
-from functools import lru_cache
 
 import numpy as np
 import pytest
 
 import reconcile_truth as truth
+from reconcile_cases import run_case
 from hdcad.models import resolve
-from hdcad.reconcile import COLUMNS, EFFECT_NAMES, KINDS, read_data, reconcile, validate_data
+from hdcad.reconcile import COLUMNS, EFFECT_NAMES, KINDS, read_data
 
 CASES = 20          # issue: "at least 20 random cases per effect"
 COMBO_CASES = 10    # task brief: "≥ 90 % of ≥ 10 cases" for two hidden effects
@@ -37,18 +37,6 @@ MEDIAN_GAIN = 0.50  # issue: "median RMSE reduction is at least 50 %"
 
 SINGLE = [(kind, effects[0]) for kind, effects in truth.SINGLE_SCENARIOS]
 COMBOS = truth.COMBO_SCENARIOS
-
-
-@lru_cache(maxsize=None)
-def run_case(kind: str, effects: tuple[str, ...], seed: int) -> dict:
-    """Generate one case, reconcile it once; truth, result (``as_dict``) and the names."""
-    code = truth.proof_model(kind, effects, seed)
-    data, hidden = truth.make_case(kind, code, effects, seed)
-    catalog = truth.default_catalog()
-    result = reconcile(kind, validate_data(kind, data), resolve(code, catalog), catalog,
-                       load_inertia_kgm2=hidden.get("load_inertia_kgm2")).as_dict()
-    return {"truth": hidden, "result": result, "named": tuple(result["missing_effects"]),
-            "seed": seed, "model": code}
 
 
 def cases(kind: str, effects: tuple[str, ...], count: int) -> list[dict]:
