@@ -27,6 +27,56 @@ class BoltCircle:
 
 
 @dataclass
+class Fit:
+    """An ISO 286 fit on one mating diameter of a part.
+
+    ``deviations_um`` are the (upper, lower) deviations of this feature from ISO 286-2 for
+    ``nominal_mm`` and ``code`` (e.g. ``"M7"`` for a hole, ``"k5"`` for a shaft).
+    """
+
+    feature: str                 # e.g. "bearing seat 6006 (outer ring)"
+    nominal_mm: float
+    code: str                    # ISO 286 tolerance class: capital = hole, small = shaft
+    kind: str                    # "hole" | "shaft"
+    deviations_um: tuple[float, float]
+    mate: str = ""               # what it mates with, e.g. "6006 outer ring (ISO 492 Normal)"
+    reason: str = ""             # why this fit (load case, rule)
+    source: str = ""             # standard / table
+
+
+@dataclass
+class GeometricTolerance:
+    """An ISO 1101 geometric tolerance or datum on a feature."""
+
+    feature: str                 # e.g. "bearing seats"
+    characteristic: str          # flatness | coaxiality | perpendicularity | runout | position | datum
+    value_mm: float | None       # None for a datum feature
+    datums: str = ""             # e.g. "A-B"; for a datum feature its letter
+    source: str = ""
+
+
+@dataclass
+class Neighbour:
+    """A bought or adjoining body the part mates with, as a simple true-size body for the
+    review assembly (bearing, seal, O-ring, screw, plug, gear outline, motor envelope).
+
+    ``dims`` holds the body's defining dimensions [mm] (e.g. d, D, B for a bearing); the body
+    sits on the part's own axis frame (Z axis, part coordinates before placement) at
+    ``z_mm`` with its reference face there, facing +z unless ``flip``; ``xy_mm`` moves
+    off-axis bodies (screws, plugs), ``direction`` gives an off-axis body's axis.
+    """
+
+    kind: str                    # bearing | seal | oring | screw | plug | gear | motor | ring | other
+    designation: str             # e.g. "6006", "ISO 4762 M5×16-12.9", "DIN 471 30×1.5"
+    dims: dict[str, float]
+    z_mm: float = 0.0
+    flip: bool = False
+    xy_mm: tuple[float, float] = (0.0, 0.0)
+    direction: tuple[float, float, float] = (0.0, 0.0, 1.0)
+    note: str = ""
+
+
+@dataclass
 class Part:
     """One generated part, modelled with its axis on Z and its mating face at z = 0."""
 
@@ -39,6 +89,10 @@ class Part:
     bolt_circles: list[BoltCircle] = field(default_factory=list)
     notes: list[str] = field(default_factory=list)
     purchased: list[dict] = field(default_factory=list)  # bought parts it holds: bearings, seals…
+    fits: list[Fit] = field(default_factory=list)                   # ISO 286 fits on mating Ø
+    tolerances: list[GeometricTolerance] = field(default_factory=list)  # ISO 1101 datums/GD&T
+    neighbours: list[Neighbour] = field(default_factory=list)       # bodies for the review assembly
+    material: str = ""          # EN designation for the drawing title block, e.g. "S355J2 (EN 10025-2)"
 
     def solid(self) -> cq.Shape:
         return self.shape.val()
