@@ -38,7 +38,7 @@ def test_bom_lists_each_joint_once_with_length_and_tightening_torque():
     rows = bill_of_materials(parts, checks, "2A-GR", "grease", "SK-1A", "12.9", grease_g=40)
     screws = [r for r in rows if r.item == "screws"]
     assert len(screws) == 1  # the housing's tapped holes take the cover's screws
-    assert screws[0].designation == "ISO 4762 M4×16-12.9" and screws[0].quantity == "6"
+    assert screws[0].designation == "ISO 4762 M4×16 – 12.9" and screws[0].quantity == "6"
     assert "M_A = 5.2 N·m" in screws[0].note
     assert any(r.item == "bearing" and r.part == "cover" for r in rows)
     assert any(r.item == "o-ring / gasket" for r in rows)
@@ -64,7 +64,7 @@ def test_a_grip_without_a_preferred_length_says_how_deep_to_counterbore():
     # M4, grip 26.8, depth 8: 30.8 … 34.8 holds no preferred length; 30 needs 0.8 mm more sink
     parts = [{"name": "casing", "bolt_circles": [_circle("spline", "clearance", grip_mm=26.8)]}]
     row = bill_of_materials(parts, [], "FD-2", "oil", "SK-1A", "12.9")[0]
-    assert row.designation == "ISO 4762 M4×?-12.9"
+    assert row.designation == "ISO 4762 M4×? – 12.9"
     assert "deepen the counterbores by 0.8 mm for M4×30" in row.note
 
 
@@ -79,3 +79,11 @@ def test_every_fd_casing_takes_a_preferred_length_spline_screw(catalog):
         # the head still sinks fully below the face the user's gear sits on
         sink = part.dimensions["counterbore_depth_mm"]
         assert sink >= ISO_4762_HEAD_MM[circle.thread][1], size
+
+
+def test_tapped_holes_name_the_screw_with_its_length_rule():
+    # the mating part's flange (a motor's) is not generated: its thickness is the unknown grip
+    parts = [{"name": "motor_flange", "bolt_circles": [_circle("motor screws", "tapped")]}]
+    row = bill_of_materials(parts, [], "GH", "grease", "SK-1A", "12.9")[0]
+    assert row.designation == "ISO 4762 M4×L – 12.9"
+    assert "L = grip of the mating part" in row.note and "preferred length" in row.note

@@ -131,3 +131,33 @@ def test_a_failing_design_gets_a_sheet_that_shows_the_failure(failing_sheet):
     assert "Failing checks:" in cover and all(label in cover for label in failed)
     html = (folder / "calc_sheet.html").read_text(encoding="utf-8")
     assert html.count('<tr class="fail">') >= len(failed)  # the rows are highlighted
+
+
+def test_cover_names_each_check_not_evaluated_with_its_reason(gh_sheet):
+    _, folder, result = gh_sheet
+    reader, _ = _text(folder)
+    cover = _page_text(reader.pages[0])
+    missing = [c for c in result["checks"] if c["status"] == "not_evaluated"]
+    assert missing  # the GH example leaves main_bearing, input_bore … open
+    for c in missing:
+        assert check_label(c["id"], c["details"]) in cover
+    assert "external_load" in cover  # main_bearing's reason: the duty has no external load
+
+
+def test_notes_printed_are_those_of_the_tables_and_size_used(gh_sheet):
+    _, folder, _ = gh_sheet
+    _, text = _text(folder)
+    flat = " ".join(text.split())
+    # CSF-45-120-GH takes its motor flange from table 064-1 and greases itself: the FD oil
+    # level table, the CSG-GH flange tables 055-1/056-1 and size 65 do not bear on it
+    assert "fd_oil_level_315-1.csv" not in flat
+    assert "056-1: the type-I block" not in flat and "Size 65 starts at ratio 80" not in flat
+    # the notes that do bear on it stay: how 064-1's columns are read, the K2 correction
+    assert "064-1: A(H7)=pilot" in flat
+    assert "seed prints 2.0" in flat
+
+
+def test_sheet_spells_speed_units_one_way(gh_sheet):
+    _, folder, _ = gh_sheet
+    _, text = _text(folder)
+    assert "r/min" in text and not re.search(r"\brpm\b", text)

@@ -124,7 +124,7 @@ def test_duty_plot_labels(svgs, evaluation):
 def test_twist_plot_labels_and_twist_at_peak_torque(svgs):
     text = _all_text(svgs["twist"])
     for label in ("output torque T [N·m]", "twist θ [arcmin]", "twist θ [mrad]",
-                  "T1 = 76 N·m", "T2 = 275 N·m", "limit ±1,760 N·m"):
+                  "T1 = 76, T2 = 275 N·m", "limit ±1,760 N·m"):
         assert label in text
     shown = float(re.search(r"peak: 400 N·m → ([\d.]+) arcmin", text).group(1))
     expected = (THETA2_RAD + (400.0 - T2_NM) / K3_NM_PER_RAD) * 180 / math.pi * 60
@@ -230,3 +230,60 @@ def test_bolt_pattern_says_when_the_hole_angle_is_not_given(tmp_path):
     text = _all_text(plots.bolt_pattern_plot([dict(circle, start_angle_deg=45.0)],
                                              tmp_path / "b.svg"))
     assert "1st hole at 45°" in text and "angle not given" not in text
+
+
+def _text_problems(fig) -> list:
+    """Pairs of texts whose boxes overlap, and texts drawn over a curve (display coordinates)."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.text import Text
+    FigureCanvasAgg(fig)
+    renderer = fig.canvas.get_renderer()
+    fig.draw(renderer)
+    texts = [t for ax in fig.axes for t in ax.texts if t.get_text().strip()]
+    texts += [t for ax in fig.axes if ax.get_legend() for t in ax.get_legend().get_texts()]
+    # Text's own extent: an Annotation's extent would include its leader line
+    boxes = [(t.get_text(), Text.get_window_extent(t, renderer)) for t in texts]
+    assert len(boxes) >= 2  # a plot without texts would pass below
+    clashes = [(a, b) for i, (a, ba) in enumerate(boxes) for b, bb in boxes[i + 1:]
+               if ba.overlaps(bb)]
+    lines = [ln for ax in fig.axes for ln in ax.get_lines() if ln.get_linestyle() != "None"]
+    points = [ln.get_transform().transform(ln.get_xydata()) for ln in lines]
+    return clashes + [text for text, box in boxes
+                      if any(box.contains(x, y) for pts in points for x, y in pts)]
+
+
+def _captured_figure(monkeypatch, draw) -> object:
+    figures = []
+    save = plots._save
+    monkeypatch.setattr(plots, "_save", lambda fig, path, title="": (figures.append(fig),
+                                                                     save(fig, path, title))[1])
+    draw()
+    return figures[0]
+
+
+@pytest.mark.parametrize("kind", ["duty", "twist", "life"])
+def test_plot_texts_do_not_overlap(evaluation, tmp_path, monkeypatch, kind):
+    model, duty = evaluation.model, evaluation.duty
+    curve, _ = stiffness_curve(model)
+    points = {"Tav": evaluation.derived["avg_torque_Nm"], "peak": 400.0,
+              "shock": duty.shock.torque_Nm}
+    draw = {"duty": lambda: plots.duty_cycle_plot(duty, tmp_path / "d.svg"),
+            "twist": lambda: plots.torque_twist_plot(curve, points, tmp_path / "t.svg",
+                                                     float(model.get("momentary_torque_Nm"))),
+            "life": lambda: plots.life_plot(evaluation.check("wg_life"), duty.required_life_h,
+                                            tmp_path / "l.svg")}[kind]
+    assert not _text_problems(_captured_figure(monkeypatch, draw))
+
+
+# small gear heads: T1 and T2 lie close together on the torque axis, where on-curve texts
+# once collided (CSF-14-50-GH: T1 = 2, T2 = 6.9 N·m; CSG-20-100-GH: T1 = 7, T2 = 25 N·m)
+@pytest.mark.parametrize("code", ["CSF-14-50-GH", "CSG-20-100-GH"])
+def test_twist_texts_do_not_overlap_on_small_gears(catalog, tmp_path, monkeypatch, code):
+    from hdcad.report.sheet import operating_points
+    model = resolve(code, catalog)
+    evaluation = run_checks(model, load_duty(examples_dir() / "duty_seed_example.yaml"), catalog)
+    curve, _ = stiffness_curve(model)
+    fig = _captured_figure(monkeypatch, lambda: plots.torque_twist_plot(
+        curve, operating_points(evaluation), tmp_path / "t.svg",
+        float(model.get("momentary_torque_Nm"))))
+    assert not _text_problems(fig)

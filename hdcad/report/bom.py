@@ -31,6 +31,11 @@ class BomRow:
         return asdict(self)
 
 
+def screw_designation(size: str, bolt_class: str) -> str:
+    """ISO 4762 designation as ordered: ``ISO 4762 M5×16 – 12.9`` (thread × length – class)."""
+    return f"ISO 4762 {size} – {bolt_class}"
+
+
 def screw_length_mm(thread: str, grip_mm: float, tapped_depth_mm: float,
                     min_engagement_mm: float | None = None) -> float | None:
     """Shortest ISO 4762 length that engages ``min_engagement_mm`` (default: steel, the
@@ -78,17 +83,18 @@ def screw_rows(part_name: str, circles: list[dict], joints: dict[str, dict],
             length = screw_length_mm(c["thread"], c["grip_mm"], c["depth_mm"] or 0.0, m_min)
             size = f"{c['thread']}×{length:g}" if length else f"{c['thread']}×?"
             hint = "" if length else "; " + _no_length_hint(c["thread"], c["grip_mm"], m_min)
-            rows.append(BomRow("screws", f"ISO 4762 {size}-{bolt_class}", str(c["count"]),
+            rows.append(BomRow("screws", screw_designation(size, bolt_class), str(c["count"]),
                                part_name, f"{c['name']} on Ø{c['diameter_mm']:g}; grip "
                                f"{c['grip_mm']:.1f} mm, thread depth {c['depth_mm']:g} mm"
                                + hint + ma))
         else:
             holes = "tapped holes" if c["kind"] == "tapped" else "clearance holes"
-            rows.append(BomRow("screws", f"ISO 4762 {c['thread']}-{bolt_class}", str(c["count"]),
-                               part_name, f"{c['name']}: {holes} on Ø{c['diameter_mm']:g}, thread "
-                               f"depth {c['depth_mm']:g} mm; length = grip of the mating part "
-                               f"(gear, motor or flexspline flange) + {m_min:g} mm ≤ grip + "
-                               f"thread depth{ma}"))
+            rows.append(BomRow("screws", screw_designation(f"{c['thread']}×L", bolt_class),
+                               str(c["count"]), part_name,
+                               f"{c['name']}: {holes} on Ø{c['diameter_mm']:g}, thread depth "
+                               f"{c['depth_mm']:g} mm; L = grip of the mating part (gear, motor "
+                               f"or flexspline flange) + {m_min:g} … {c['depth_mm']:g} mm, the "
+                               f"next ISO 4762 preferred length{ma}"))
     return rows
 
 

@@ -14,8 +14,9 @@ from datetime import date
 from .. import __version__
 from ..catalog import Catalog
 from ..design_options import DesignOptions
+from ..models import parse_code
 from .bom import BomRow
-from .format import check_label, fmt, margin_text, sense_text, status_text
+from .format import check_label, fmt, margin_text, sense_text, status_text, unit_text
 
 FAMILY_TITLES = {"torque": "Torque", "speed": "Speed", "strength": "Flexspline strength",
                  "life": "Wave-generator life", "thrust": "Thrust force",
@@ -55,7 +56,15 @@ def sheet_context(result: dict, catalog: Catalog, figures: list[Figure],
         "assumptions": assumptions(result, catalog),
         "provenance": provenance(checks),
         "failures": [check_label(c["id"], c["details"]) for c in checks if c["status"] == "fail"],
+        "not_evaluated": [{"label": check_label(c["id"], c["details"]), "reason": _reason(c)}
+                          for c in checks if c["status"] == "not_evaluated"],
     }
+
+
+def _reason(check: dict) -> str:
+    """Why a check was not evaluated, from its note (first clause, without the prefix)."""
+    note = check["note"] or ""
+    return note.removeprefix("not evaluated: ").split("; ")[0].split(". ")[0]
 
 
 def duty_summary(result: dict) -> list[tuple[str, str]]:
@@ -102,11 +111,13 @@ def option_rows(options: dict) -> list[dict]:
 
 
 def check_row(c: dict) -> dict:
-    inputs = [{"name": name, "value": fmt(q["value"]), "unit": q["unit"], "source": q["source"]}
+    inputs = [{"name": name, "value": fmt(q["value"]), "unit": unit_text(q["unit"]),
+               "source": q["source"]}
               for name, q in c["inputs"].items()]
     return {"label": check_label(c["id"], c["details"]), "id": c["id"], "title": c["title"],
             "formula": c["formula"], "inputs": inputs, "value": fmt(c["value"]),
-            "limit": fmt(c["limit"]), "sense": sense_text(c["sense"]), "unit": c["unit"],
+            "limit": fmt(c["limit"]), "sense": sense_text(c["sense"]),
+            "unit": unit_text(c["unit"]),
             "margin": margin_text(c["margin"]), "status": c["status"],
             "status_text": status_text(c["status"]), "note": c["note"], "source": c["source"],
             "criteria": criteria_rows(c["details"].get("criteria"))}
@@ -116,7 +127,8 @@ def criteria_rows(criteria) -> list[dict]:
     """Sub-criteria of a check (bolt pattern, lubrication, oil level) as table rows."""
     if isinstance(criteria, dict):
         return [{"name": k, "status": v["status"], "status_text": status_text(v["status"]),
-                 "text": f"{fmt(v['value'])} {sense_text(v['sense'])} {fmt(v['limit'])} {v['unit']}: "
+                 "text": f"{fmt(v['value'])} {sense_text(v['sense'])} {fmt(v['limit'])} "
+                         f"{unit_text(v['unit'])}: "
                          f"{v['rule']}"} for k, v in criteria.items()]
     return [{"name": c["name"], "status": c["status"], "status_text": status_text(c["status"]),
              "text": c["text"]} for c in criteria or []]
@@ -142,9 +154,10 @@ def provenance(checks: list[dict]) -> list[dict]:
         for name, q in c["inputs"].items():
             if not q["source"]:
                 continue
-            key = (name, fmt(q["value"]), q["unit"], q["source"])
+            key = (name, fmt(q["value"]), unit_text(q["unit"]), q["source"])
             row = rows.setdefault(key, {"name": name, "value": fmt(q["value"]),
-                                        "unit": q["unit"], "source": q["source"], "used_by": []})
+                                        "unit": unit_text(q["unit"]), "source": q["source"],
+                                        "used_by": []})
             label = check_label(c["id"], c["details"])
             if label not in row["used_by"]:
                 row["used_by"].append(label)
@@ -159,14 +172,43 @@ def _table_ids(catalog: Catalog, file: str) -> set[str]:
     return set(TABLE_ID.findall(file + " " + listed))
 
 
+SIZE_MENTION = re.compile(r"\b[Ss]ize (\d+)\b")
+
+
+def _used_sources(result: dict) -> str:
+    """Source text of the catalog values this design actually used.
+
+    A check that was not evaluated because it does not apply (grease instead of oil, a closed
+    gear head) used no table even though its record names one; only inputs with a value count.
+    """
+    texts = []
+    for c in result["checks"]:
+        if c["status"] != "not_evaluated":
+            texts.append(c["source"])
+        texts += [q["source"] for q in c["inputs"].values() if q.get("value") is not None]
+    texts += [n for p in result["parts"] for n in p["notes"]]
+    return " ".join(texts)
+
+
+def note_applies(text: str, used_ids: set[str], size: int | None) -> bool:
+    """Whether an interpretation note bears on this design.
+
+    A note that names seed tables applies when it names one the design used; a note that names
+    gear sizes applies when it names this size. Notes that name neither apply to the whole table.
+    """
+    ids = set(TABLE_ID.findall(text))
+    if ids and not ids & used_ids:
+        return False
+    sizes = {int(m) for m in SIZE_MENTION.findall(text)}
+    return not sizes or size is None or size in sizes
+
+
 def assumptions(result: dict, catalog: Catalog) -> list[dict]:
     """Interpretations of the catalog tables this design used, then the tool's own choices."""
-    used = " ".join(c["source"] + " " + " ".join(q["source"] for q in c["inputs"].values())
-                    for c in result["checks"])
-    used += " ".join(n for p in result["parts"] for n in p["notes"])
-    used_ids = set(TABLE_ID.findall(used))
+    used_ids = set(TABLE_ID.findall(_used_sources(result)))
+    size = parse_code(result["model"])[2]
     rows = [{"where": file, "text": text} for file, text in catalog.interpretations()
-            if used_ids & _table_ids(catalog, file)]
+            if used_ids & _table_ids(catalog, file) and note_applies(text, used_ids, size)]
     for part in result["parts"]:
         rows += [{"where": part["name"], "text": note} for note in part["notes"]]
     return rows

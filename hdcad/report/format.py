@@ -37,3 +37,14 @@ SENSE_SYMBOLS = {"<=": "≤", ">=": "≥"}
 
 def sense_text(sense: str) -> str:
     return SENSE_SYMBOLS.get(sense, sense)
+
+
+# unit spellings of catalog column names (``speed_rpm`` → rpm) as printed: one spelling each
+UNIT_TEXT = {"rpm": "r/min", "Nm": "N·m", "Nm_per_rad": "N·m/rad", "kgfm": "kgf·m",
+             "kgfm_per_arcmin": "kgf·m/arcmin", "cNm": "cN·m", "kgfcm": "kgf·cm",
+             "kgm2": "kg·m²", "pct": "%", "C": "°C", "deg": "°"}
+
+
+def unit_text(unit: str | None) -> str:
+    """A unit as the sheet prints it (r/min, N·m, kg·m²), whatever spelling the data uses."""
+    return UNIT_TEXT.get(unit or "", unit or "")

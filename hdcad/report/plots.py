@@ -40,6 +40,8 @@ INK, BLUE, VERMILION, GREEN, GREY = "#000000", "#0072B2", "#D55E00", "#009E73", 
 LIGHT_PASS, LIGHT_FAIL, LIGHT_MATERIAL = "#DDEFE6", "#F6DDD0", "#E6E6E6"
 TWIST_RANGE_FACTOR = 1.1  # torque-twist curve drawn to 1.1 × the largest torque of interest
 CURVE_SAMPLES = 401
+# torque-twist leader texts: first baseline [pt above the axes' bottom], line pitch [× font size]
+LEADER_TEXT_TOP_PT, LEADER_LINE_STEP = 64.0, 1.5
 ARCMIN_PER_RAD = 180.0 / math.pi * 60.0
 
 
@@ -186,10 +188,13 @@ def torque_twist_plot(curve: StiffnessCurve | None, points: dict[str, float], pa
     ax.plot(torques, twist, color=BLUE, lw=1.6, label="catalog curve")
     ax.axhline(0.0, color=GREY, lw=0.5)
     ax.axvline(0.0, color=GREY, lw=0.5)
-    for name, t, th in knees:
-        ax.plot([-t, t], [-th, th], ls="none", marker="D", ms=4, mfc="white", mec=INK)
-        ax.annotate(f"{name} = {t:g} N·m", (t, th), xytext=(-6, 6), textcoords="offset points",
-                    ha="right", fontsize=SMALL_PT)
+    if knees:
+        # the segment limits sit close to the origin where on-curve texts would collide with
+        # each other and with the curve: they are named once in the legend instead
+        ax.plot([s * t for _, t, _ in knees for s in (-1, 1)],
+                [s * th for _, _, th in knees for s in (-1, 1)], ls="none", marker="D", ms=4,
+                mfc="white", mec=INK,
+                label="segment limits " + ", ".join(f"{n} = {t:g}" for n, t, _ in knees) + " N·m")
     if limit_Nm:
         for sign in (-1, 1):
             ax.axvline(sign * abs(limit_Nm), color=VERMILION, ls="-.", lw=1.0,
@@ -202,7 +207,8 @@ def torque_twist_plot(curve: StiffnessCurve | None, points: dict[str, float], pa
         # texts stacked in the empty lower-right quadrant (T > 0, θ < 0) with leader lines:
         # operating points are often close together and their labels would overlap
         ax.annotate(f"{name}: {t:,.0f} N·m → {th:.2f} arcmin", (t, th),
-                    xytext=(0.64, 0.36 - 0.075 * i), textcoords="axes fraction",
+                    xytext=(0.64, LEADER_TEXT_TOP_PT - LEADER_LINE_STEP * SMALL_PT * i),
+                    textcoords=("axes fraction", "axes points"),
                     fontsize=SMALL_PT, va="center",
                     arrowprops={"arrowstyle": "-", "color": GREY, "lw": 0.6,
                                 "relpos": (0.0, 0.5), "shrinkA": 2, "shrinkB": 3})
