@@ -126,7 +126,7 @@ def cmd_design(args) -> int:
     model = resolve(args.model, catalog)
     duty = load_duty(args.duty)
     options = load_options(args.design)
-    result = run_design(model, duty, options, catalog, args.out)
+    result = run_design(model, duty, options, catalog, args.out, parallel=True)
     print_evaluation(result.evaluation)
     print(f"wrote {result.folder}/: {', '.join(result.files)}")
     return EXIT_OK if result.evaluation.all_passed else EXIT_FAIL

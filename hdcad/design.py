@@ -127,33 +127,44 @@ def _part_record(part, mass_kg: float) -> dict:
 
 
 def run_design(model: GearModel, duty: Duty, options: DesignOptions, catalog: Catalog,
-               out_dir: Path) -> DesignResult:
-    """Build, check and export ``model``; returns what was written."""
-    from .geometry.build import build_parts, interference_mm3, part_mass_kg
-    from .checks.geometric import geometric_checks
-    from .geometry.clearance import inner_wall_clearance
+               out_dir: Path, parallel: bool = False) -> DesignResult:
+    """Build, check and export ``model``; returns what was written.
+
+    ``parallel``: plots and the PDF in a side process while the CAD chain runs (False inside
+    a batch whose designs already run in parallel).
+    """
     from .output import json_text, staged_dir
-    from .report.sheet import write_calc_sheet
+    from .parallel import side_executor
+    from .report.sheet import make_bolt_figures, make_figures, warm_up, write_calc_sheet
 
     clock = _Clock()
     evaluation = run_checks(model, duty, catalog, options.input_thrust_capacity_N)
     clock.lap("checks")
-    parts = clock.lap("build", build_parts(model, catalog, options))
-    masses = {p.name: part_mass_kg(p, options.density_kg_m3) for p in parts}
-    evaluation.checks += geometric_checks(model, parts, options, catalog)
-    evaluation.checks.append(inner_wall_clearance(model, parts, catalog, options))
-    evaluation.checks.append(oil_level_check(model, parts, duty, options, catalog))
-    evaluation.checks.append(interference_check(interference_mm3(parts), masses))
-    clock.lap("geometric checks")
     target = Path(out_dir) / model.code
-    with staged_dir(target) as stage:
-        files = clock.lap("export", _export_parts(parts, stage))
-        drawings = clock.lap("drawings", _draw_parts(parts, stage))
+    with side_executor(parallel) as side, staged_dir(target) as stage:
+        # the report chain (matplotlib, WeasyPrint) runs beside the CAD chain until the PDF
+        plots = side.submit(make_figures, evaluation, stage)
+        side.submit(warm_up)
+        # cadquery is imported here, after the side process has started
+        from .checks.geometric import geometric_checks
+        from .geometry.build import build_parts, interference_mm3, part_mass_kg
+        from .geometry.clearance import inner_wall_clearance
+        parts = clock.lap("build", build_parts(model, catalog, options))
+        masses = {p.name: part_mass_kg(p, options.density_kg_m3) for p in parts}
+        evaluation.checks += geometric_checks(model, parts, options, catalog)
+        evaluation.checks.append(inner_wall_clearance(model, parts, catalog, options))
+        evaluation.checks.append(oil_level_check(model, parts, duty, options, catalog))
+        evaluation.checks.append(interference_check(interference_mm3(parts), masses))
+        clock.lap("geometric checks")
         result = evaluation.as_dict()
         result.update({"design_options": options.as_dict(),
                        "parts": [_part_record(p, masses[p.name]) for p in parts]})
-        sheet = clock.lap("calc sheet", write_calc_sheet(stage, result, evaluation, catalog,
-                                                         drawings))
+        bolts = side.submit(make_bolt_figures, result["parts"], stage)
+        files = clock.lap("export", _export_parts(parts, stage))
+        drawings = clock.lap("drawings", _draw_parts(parts, stage))
+        sheet = side.submit(write_calc_sheet, stage, result, evaluation, catalog, drawings,
+                            plots.result() + bolts.result()).result()
+        clock.lap("calc sheet")
         files += ([f"drawings/{p.name}.png" for p in parts] + sheet["files"]
                   + ["results.json"])
         result.update({"files": files, "bill_of_materials": sheet["bom"],

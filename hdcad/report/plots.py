@@ -80,7 +80,10 @@ def _save(fig, path: Path, title: str = "") -> Path:
     path.parent.mkdir(parents=True, exist_ok=True)
     # no date: the same data gives the same file; the title goes in the metadata only
     metadata = {"Date": None, **({"Title": title} if title else {})}
-    fig.savefig(path, format="svg", metadata=metadata)
+    import matplotlib
+    # a fixed salt for the ids of clip paths and hatches: the same plot gives the same bytes
+    with matplotlib.rc_context({"svg.hashsalt": "hdcad"}):
+        fig.savefig(path, format="svg", metadata=metadata)
     return path
 
 

@@ -30,8 +30,8 @@ def operating_points(evaluation: Evaluation) -> dict[str, float]:
     return points
 
 
-def make_figures(evaluation: Evaluation, parts: list[dict], folder: Path) -> list[Figure]:
-    """The duty, torque–twist, life and bolt-pattern plots as SVG in ``folder/figures``."""
+def make_figures(evaluation: Evaluation, folder: Path) -> list[Figure]:
+    """The duty, torque–twist and life plots as SVG in ``folder/figures``."""
     from . import plots
     out = folder / "figures"
     out.mkdir(exist_ok=True)
@@ -53,6 +53,15 @@ def make_figures(evaluation: Evaluation, parts: list[dict], folder: Path) -> lis
                           "L10 life against the average output torque (formula 012-1) at the "
                           "duty's average input speed; the horizontal line is the required life.",
                           "" if life_svg else life.note))
+    return figures
+
+
+def make_bolt_figures(parts: list[dict], folder: Path) -> list[Figure]:
+    """One bolt-pattern plot per part that has bolt circles, as SVG in ``folder/figures``."""
+    from . import plots
+    out = folder / "figures"
+    out.mkdir(exist_ok=True)
+    figures = []
     for part in parts:
         if not part["bolt_circles"]:
             continue
@@ -66,14 +75,23 @@ def make_figures(evaluation: Evaluation, parts: list[dict], folder: Path) -> lis
     return figures
 
 
+def warm_up() -> None:
+    """Import the PDF renderer ahead of use (a side process does it while CAD builds)."""
+    import weasyprint  # noqa: F401
+
+
 def _rel(path: Path | None, folder: Path) -> str | None:
     return None if path is None else Path(path).relative_to(folder).as_posix()
 
 
 def write_calc_sheet(folder: Path, result: dict, evaluation: Evaluation, catalog: Catalog,
-                     drawings: list[Figure]) -> dict:
-    """Write calc_sheet.html and calc_sheet.pdf into ``folder``; returns names and page count."""
-    figures = make_figures(evaluation, result["parts"], folder)
+                     drawings: list[Figure], figures: list[Figure] | None = None) -> dict:
+    """Write calc_sheet.html and calc_sheet.pdf into ``folder``; returns names and page count.
+
+    ``figures``: the plots already made (make_figures + make_bolt_figures); made here if None.
+    """
+    if figures is None:
+        figures = make_figures(evaluation, folder) + make_bolt_figures(result["parts"], folder)
     options = result["design_options"]
     model = evaluation.model
     housing_row = (catalog.find("component_housing", series=model.series, size=model.size)
