@@ -13,7 +13,7 @@ from typing import Sequence
 
 from . import __version__
 from .errors import InputError
-from .report.format import check_label, fmt, margin_text, status_text
+from .report.format import check_label, fmt, margin_text, relation_text, status_text
 
 EXIT_OK, EXIT_FAIL, EXIT_INPUT = 0, 1, 2
 
@@ -57,7 +57,8 @@ def print_evaluation(ev) -> None:
     print(f"duty {ev.duty.name}: Tav {fmt(d['avg_torque_Nm'])} N·m, no_av "
           f"{fmt(d['avg_output_speed_rpm'])} r/min, ni_av {fmt(d['avg_input_speed_rpm'])} r/min, "
           f"ni_max {fmt(d['max_input_speed_rpm'])} r/min")
-    rows = [[check_label(c.id, c.details), status_text(c.status), fmt(c.value), c.sense or "",
+    rows = [[check_label(c.id, c.details), status_text(c.status), fmt(c.value),
+             relation_text(c.sense, c.status),
              fmt(c.limit), c.unit, margin_text(c.margin)]
             for c in ev.checks]
     print(_table(["check", "status", "value", "", "limit", "unit", "margin"], rows))
@@ -95,7 +96,8 @@ def cmd_select(args) -> int:
     rows = []
     for c in candidates:
         f, ev = c.first_failure, c.evaluation
-        remark = (f"{f.id}: {fmt(f.value)} {f.sense} {fmt(f.limit)} {f.unit}".rstrip() if f else
+        remark = (f"{f.id}: {fmt(f.value)} {relation_text(f.sense, f.status)} {fmt(f.limit)} "
+                  f"{f.unit}".rstrip() if f else
                   f"missing core rating: {', '.join(c.missing_core)}" if c.missing_core else
                   f"{len(ev.not_evaluated)} not evaluated")
         rows.append([c.model, c.status.upper() if c.passes else c.status, remark])
@@ -113,7 +115,33 @@ def cmd_select(args) -> int:
             "incomplete": [{"model": c.model, "missing": c.missing_core}
                            for c in candidates if c.status == "incomplete"],
         }))
+    if args.design_top:
+        return _design_top(args, duty, catalog, [c.model for c in passing[:args.design_top]])
     return EXIT_OK if passing else EXIT_FAIL
+
+
+def _design_top(args, duty, catalog, codes: list[str]) -> int:
+    """Packets of the best candidates in parallel, and DIR/index.html comparing them."""
+    from pathlib import Path
+    from .batch import batch_executor, run_batch, write_index
+    from .design_options import load_options
+    if not codes:
+        print("no passing model: no design packets", file=sys.stderr)
+        return EXIT_FAIL
+    options = load_options(args.design)
+    out = Path(args.out)
+
+    def progress(done: int, total: int, summary: dict) -> None:
+        state = summary["verdict"] if summary["built"] else f"not built: {summary['error']}"
+        print(f"[{done}/{total}] {summary['model']} ({summary['seconds']:.1f} s): {state}",
+              file=sys.stderr, flush=True)
+
+    print(f"building {len(codes)} design packets: {', '.join(codes)}", file=sys.stderr)
+    with batch_executor(args.jobs, args.scheduler) as executor:
+        summaries = run_batch(codes, duty, options, catalog, out, executor, progress)
+    index = write_index(summaries, duty.name, out)
+    print(f"wrote {index} ({sum(s['built'] for s in summaries)} of {len(codes)} packets)")
+    return EXIT_OK if any(s["built"] and s["all_passed"] for s in summaries) else EXIT_FAIL
 
 
 def cmd_design(args) -> int:
@@ -195,6 +223,16 @@ def _parser() -> argparse.ArgumentParser:
     p.add_argument("--duty", required=True, metavar="FILE", help="duty YAML file")
     p.add_argument("--series", choices=["FD", "CSF-GH", "CSG-GH", "CSF", "CSG"])
     p.add_argument("--json", metavar="FILE", help="also write the results as JSON")
+    p.add_argument("--design-top", type=_positive_int, metavar="N",
+                   help="build the design packets of the N smallest passing models into "
+                        "--out DIR, in parallel, with DIR/index.html comparing them")
+    p.add_argument("--out", metavar="DIR", help="output folder of --design-top: DIR/MODEL/")
+    p.add_argument("--design", metavar="FILE", help="design options YAML for --design-top")
+    p.add_argument("--jobs", type=_positive_int, metavar="J",
+                   help="parallel packet builds (default: one per core)")
+    p.add_argument("--scheduler", metavar="ADDRESS",
+                   help="run the packet builds on a Dask cluster, e.g. tcp://host:8786 "
+                        "(needs the [cluster] extra)")
     p = command("design", cmd_design, "Checks, housing/flange parts, STEP/STL/SVG and "
                                       "results.json for one model.")
     p.add_argument("model", help="model code, e.g. FD-25-80-2, FD-25-80-0, CSF-45-120-GH")
@@ -214,8 +252,21 @@ def _parser() -> argparse.ArgumentParser:
     return parser
 
 
+def _positive_int(text: str) -> int:
+    try:
+        value = int(text)
+    except ValueError:
+        value = 0
+    if not 1 <= value <= 10_000:
+        raise argparse.ArgumentTypeError(f"must be a whole number from 1 to 10000 (got {text!r})")
+    return value
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     args = _parser().parse_args(argv)
+    if getattr(args, "design_top", None) and not args.out:
+        print("hdcad: error: --design-top: needs --out DIR for the packets", file=sys.stderr)
+        return EXIT_INPUT
     try:
         return args.func(args)
     except InputError as exc:

@@ -11,7 +11,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from .catalog import Catalog
-from .checks.record import CheckResult, Quantity, compared
+from .checks.record import CheckResult, Quantity, compared, not_evaluated
 from .checks.run import Evaluation, run_checks
 from .design_options import DesignOptions
 from .duty import Duty
@@ -34,6 +34,13 @@ def interference_check(pairs: list[tuple[str, str, float]], masses: dict[str, fl
     worst = max((v for _, _, v in pairs), default=0.0)
     inputs = {f"{a} ∩ {b}": Quantity(v, "mm³") for a, b, v in pairs}
     inputs.update({f"mass {name}": Quantity(m, "kg") for name, m in masses.items()})
+    if not pairs:
+        return not_evaluated("interference", "Interference between parts", "geometry",
+                             "max over part pairs of V(A ∩ B) ≤ 0",
+                             f"a second part: the design has {len(masses)} part(s), so no pair "
+                             "to check", inputs, unit="mm³",
+                             source="OCCT boolean common of the placed solids",
+                             details={"pairs": [], "masses_kg": masses})
     # 1e-3 mm³ is far below any real overlap and above OCCT's boolean noise on touching faces
     return compared("interference", "Interference between parts", "geometry",
                     "max over part pairs of V(A ∩ B) ≤ 0", inputs, worst, 1e-3, "mm³", "<=",

@@ -104,3 +104,11 @@ def test_failing_design_is_still_written(tmp_path, example_duty_path):
     assert code == 1
     result = json.loads((folder / "results.json").read_text())
     assert not result["all_passed"] and (folder / "assembly.step").exists()
+
+
+def test_interference_with_a_single_part_is_not_evaluated():
+    from hdcad.design import interference_check
+    single = interference_check([], {"motor_flange": 0.9})
+    assert single.status == "not_evaluated" and "no pair" in single.note
+    pair = interference_check([("a", "b", 0.0)], {"a": 1.0, "b": 2.0})
+    assert pair.status == "pass"

@@ -123,7 +123,8 @@ def bolt_pattern(name: str, circle_diameter_mm: float, count: int, thread: str, 
                  tightening: float | None = None, *, tapped_material: str = "steel",
                  catalog=None, mu_thread: float = MU_THREAD, mu_head: float = MU_HEAD,
                  edge_factor: float = EDGE_FACTOR, min_engagement: dict | None = None,
-                 tightening_factor: float = 1.0) -> CheckResult:
+                 tightening_factor: float = 1.0, outline_square_mm: float | None = None,
+                 start_angle_deg: float = 0.0) -> CheckResult:
     """Check one bolt circle of ISO 4762 socket head cap screws.
 
     Parameters
@@ -147,11 +148,16 @@ def bolt_pattern(name: str, circle_diameter_mm: float, count: int, thread: str, 
     edge_factor : minimum edge distance / hole diameter [-]
     min_engagement : {material: minimum engagement / d}
     tightening_factor : αA ≥ 1; the capacity uses F_M/αA
+    outline_square_mm : side of a square outline centred on the bolt circle [mm] (instead
+        of ``annulus_outer_mm``): the outer edge distance is measured to the square's sides
+    start_angle_deg : angle of the first hole from +X [deg] (others evenly spaced), for the
+        square outline
 
     Returns
     -------
-    CheckResult, value = T_cap [N·m], limit = S·T [N·m] (sense ``>=``). Fails when any
-    sub-criterion fails; the margin is the smallest sub-criterion margin.
+    CheckResult whose value, limit, unit and sense are those of the governing criterion:
+    the failing one, or with all passing the one with the smallest margin (named in
+    ``details['governing']``; all criteria in ``details['criteria']``).
     """
     if hole_kind not in HOLE_KINDS:
         raise ValueError(f"hole_kind must be one of {', '.join(HOLE_KINDS)} (got {hole_kind!r})")
@@ -199,11 +205,12 @@ def bolt_pattern(name: str, circle_diameter_mm: float, count: int, thread: str, 
     edge_rule = (f"hole centre to edge ≥ {edge_factor:g}·d_h = {e_min:.2f} mm, d_h = "
                  f"{d_hole:g} mm ({'ISO 273 medium' if hole_kind == 'clearance' else 'thread d'}"
                  "; EN 1993-1-8 Table 3.3 e2)")
-    for label, diameter, distance in (
-            ("edge_inner", annulus_inner_mm, None if annulus_inner_mm is None
-             else (D - float(annulus_inner_mm)) / 2.0),
-            ("edge_outer", annulus_outer_mm, None if annulus_outer_mm is None
-             else (float(annulus_outer_mm) - D) / 2.0)):
+    outer = (square_edge_distance_mm(D, n, float(outline_square_mm), start_angle_deg)
+             if outline_square_mm else None if annulus_outer_mm is None
+             else (float(annulus_outer_mm) - D) / 2.0)
+    for label, distance in (("edge_inner", None if annulus_inner_mm is None
+                             else (D - float(annulus_inner_mm)) / 2.0),
+                            ("edge_outer", outer)):
         if distance is None:
             criteria[label] = _criterion(None, e_min, "mm", ">=", edge_rule + "; annulus "
                                          "diameter not given", NOT_EVALUATED)
@@ -273,13 +280,31 @@ def bolt_pattern(name: str, circle_diameter_mm: float, count: int, thread: str, 
     if tightening_factor == 1.0:
         notes.append("nominal preload: tightening scatter αA and embedding are left to the "
                      "safety factor")
-    result = compared(ID, title, FAMILY, FORMULA, inputs, capacity, required, "N·m", ">=",
-                      SOURCE, "; ".join(notes), details)
+    governing = governing_criterion(criteria)
+    details["governing"] = governing
+    g = criteria[governing]
+    result = compared(ID, title, FAMILY, FORMULA, inputs, g["value"], g["limit"], g["unit"],
+                      g["sense"], SOURCE, f"governing: {governing}; " + "; ".join(notes),
+                      details)
     if failed:
         result.status = FAIL
-    margins = [c["margin"] for c in criteria.values() if c["margin"] is not None]
-    result.margin = min(margins) if margins else result.margin
     return result
+
+
+def governing_criterion(criteria: dict[str, dict]) -> str:
+    """The criterion a one-line summary shows: a failing one, else the smallest margin."""
+    decided = {k: c for k, c in criteria.items() if c["margin"] is not None}
+    if not decided:
+        return "torque_capacity"
+    return min(decided, key=lambda k: (criteria[k]["status"] != FAIL, decided[k]["margin"]))
+
+
+def square_edge_distance_mm(circle_diameter_mm: float, count: int, side_mm: float,
+                            start_angle_deg: float = 0.0) -> float:
+    """Smallest distance [mm] from a hole centre to the sides of a centred square outline."""
+    r, half = circle_diameter_mm / 2.0, side_mm / 2.0
+    angles = (math.radians(start_angle_deg) + 2 * math.pi * i / count for i in range(count))
+    return min(half - max(abs(r * math.cos(a)), abs(r * math.sin(a))) for a in angles)
 
 
 def _fmt(x) -> str:

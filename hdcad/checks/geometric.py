@@ -138,6 +138,8 @@ def geometric_checks(model: GearModel, parts: list, options: DesignOptions,
                 circle.kind, circle.annulus_inner_mm, circle.annulus_outer_mm, circle.depth_mm,
                 options.bolt_class, options.friction_coefficient, torque,
                 options.bolt_safety_factor, catalog=catalog,
+                outline_square_mm=getattr(circle, "outline_square_mm", None),
+                start_angle_deg=circle.start_angle_deg,
                 tapped_material="steel" if circle.kind == "clearance" else options.material)
             checks.append(record if known is not None else _torque_missing(record))
     return checks

@@ -291,8 +291,8 @@ class GHMotorFlange:
                                              self.tap_drill, self.thread, "tapped",
                                              self.thread_depth,
                                              annulus_inner_mm=self.pilot,
-                                             # a square's inscribed circle: conservative
-                                             annulus_outer_mm=self.square or self.outer,
+                                             annulus_outer_mm=self.outer,
+                                             outline_square_mm=self.square,
                                              start_angle_deg=MOTOR_HOLE_START_DEG)],
                     notes=self._notes())
 

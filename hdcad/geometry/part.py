@@ -20,7 +20,8 @@ class BoltCircle:
     kind: str                # "clearance" | "tapped"
     depth_mm: float | None = None  # tapped depth (thread engagement available)
     annulus_inner_mm: float | None = None  # material ring the holes sit in (diameters)
-    annulus_outer_mm: float | None = None
+    annulus_outer_mm: float | None = None  # round outline; None with a square outline
+    outline_square_mm: float | None = None  # square outline (side), centred on the circle
     grip_mm: float | None = None  # clamped length under the head (clearance holes): screw length
     start_angle_deg: float = 0.0  # angle of the first hole from +X; the others evenly spaced
     in_bom: bool = True  # False: the screws are listed with the mating clearance circle

@@ -16,7 +16,8 @@ from ..catalog import Catalog
 from ..design_options import DesignOptions
 from ..models import parse_code
 from .bom import BomRow
-from .format import check_label, fmt, margin_text, sense_text, status_text, unit_text
+from .format import (check_label, fmt, margin_text, relation_text, status_text,
+                     unit_text)
 
 FAMILY_TITLES = {"torque": "Torque", "speed": "Speed", "strength": "Flexspline strength",
                  "life": "Wave-generator life", "thrust": "Thrust force",
@@ -114,9 +115,10 @@ def check_row(c: dict) -> dict:
     inputs = [{"name": name, "value": fmt(q["value"]), "unit": unit_text(q["unit"]),
                "source": q["source"]}
               for name, q in c["inputs"].items()]
-    return {"label": check_label(c["id"], c["details"]), "id": c["id"], "title": c["title"],
+    return {"label": check_label(c["id"], c["details"], criterion=False),
+            "criterion": c["details"].get("governing", ""), "id": c["id"], "title": c["title"],
             "formula": c["formula"], "inputs": inputs, "value": fmt(c["value"]),
-            "limit": fmt(c["limit"]), "sense": sense_text(c["sense"]),
+            "limit": fmt(c["limit"]), "sense": relation_text(c["sense"], c["status"]),
             "unit": unit_text(c["unit"]),
             "margin": margin_text(c["margin"]), "status": c["status"],
             "status_text": status_text(c["status"]), "note": c["note"], "source": c["source"],
@@ -127,7 +129,7 @@ def criteria_rows(criteria) -> list[dict]:
     """Sub-criteria of a check (bolt pattern, lubrication, oil level) as table rows."""
     if isinstance(criteria, dict):
         return [{"name": k, "status": v["status"], "status_text": status_text(v["status"]),
-                 "text": f"{fmt(v['value'])} {sense_text(v['sense'])} {fmt(v['limit'])} "
+                 "text": f"{fmt(v['value'])} {relation_text(v['sense'], v['status'])} {fmt(v['limit'])} "
                          f"{unit_text(v['unit'])}: "
                          f"{v['rule']}"} for k, v in criteria.items()]
     return [{"name": c["name"], "status": c["status"], "status_text": status_text(c["status"]),

@@ -18,10 +18,13 @@ def fmt(value, digits: int = 4) -> str:
     return f"{value:.{digits}g}"
 
 
-def check_label(check_id: str, details: dict) -> str:
-    """Check id, with the bolt circle's name where one id has several records."""
-    name = details.get("name")
-    return f"{check_id}[{name}]" if name else check_id
+def check_label(check_id: str, details: dict, criterion: bool = True) -> str:
+    """Check id, with the bolt circle's name where one id has several records, and (unless
+    ``criterion`` is False) the governing criterion where a check has several: the one its
+    row's numbers belong to."""
+    name, governing = details.get("name"), details.get("governing")
+    label = f"{check_id}[{name}]" if name else check_id
+    return f"{label} {governing}" if governing and criterion else label
 
 
 def margin_text(margin: float | None) -> str:
@@ -37,6 +40,21 @@ SENSE_SYMBOLS = {"<=": "≤", ">=": "≥"}
 
 def sense_text(sense: str) -> str:
     return SENSE_SYMBOLS.get(sense, sense)
+
+
+# the relation that holds between value and limit when the check's own sense does not
+FAILED_SENSE = {"<=": ">", ">=": "<"}
+
+
+def relation_text(sense: str | None, status: str) -> str:
+    """Operator printed between value and limit, true for the printed numbers.
+
+    A passing check prints its sense (``319.7 ≤ 620``); a failing one prints the relation
+    that made it fail (``0.1888 < 0.2``), so ``value op limit`` never reads as a pass.
+    """
+    if not sense:
+        return ""
+    return FAILED_SENSE.get(sense, sense) if status == "fail" else sense_text(sense)
 
 
 # unit spellings of catalog column names (``speed_rpm`` → rpm) as printed: one spelling each
