@@ -42,7 +42,15 @@ class CheckResult:
     details: dict[str, Any] = field(default_factory=dict)
 
     def as_dict(self) -> dict[str, Any]:
-        return asdict(self)
+        """The record for results.json: sources with the seed documents' titles, plus
+        ``source_refs`` ({document, table, page, line} per citation) for machines."""
+        from ..sources import source_refs, source_text
+        data = asdict(self)
+        data["source_refs"] = source_refs(self.source)
+        data["source"] = source_text(self.source)
+        for q in data["inputs"].values():
+            q["source"] = source_text(q["source"])
+        return data
 
     @property
     def failed(self) -> bool:

@@ -15,6 +15,7 @@ from .. import __version__
 from ..catalog import Catalog
 from ..design_options import DesignOptions
 from ..models import parse_code
+from ..sources import source_text
 from .bom import BomRow
 from .format import (check_label, fmt, margin_text, relation_text, status_text,
                      unit_text)
@@ -212,5 +213,5 @@ def assumptions(result: dict, catalog: Catalog) -> list[dict]:
     rows = [{"where": file, "text": text} for file, text in catalog.interpretations()
             if used_ids & _table_ids(catalog, file) and note_applies(text, used_ids, size)]
     for part in result["parts"]:
-        rows += [{"where": part["name"], "text": note} for note in part["notes"]]
+        rows += [{"where": part["name"], "text": source_text(note)} for note in part["notes"]]
     return rows
