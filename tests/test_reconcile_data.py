@@ -1,4 +1,4 @@
-"""`hdcad reconcile`: bad files, the command line, the JSON and the report folder (issue 5).
+"""`hdcad reconcile`: bad files, the command line, the JSON and the report folder.
 
 The small data sets here come from this file's own generator (catalog curve or ideal
 transmission plus one effect written out by hand, plus seeded white noise); the statistical

@@ -1,4 +1,4 @@
-"""Properties of the reconcile effect library, noise estimator and baseline (issue 5).
+"""Properties of the reconcile effect library, noise estimator and baseline.
 
 Each test checks a physical property stated in the seeds or a closed-form result of the
 model's own physics (Dahl's friction model, the linear joint's frequency response), not a

@@ -1,4 +1,4 @@
-"""Proof of `hdcad reconcile` on data with hidden effects (issue 5, "Proof on hidden-effect
+"""Proof of `hdcad reconcile` on data with hidden effects ("Proof on hidden-effect
 data").
 
 The data come from ``reconcile_truth`` (an independent simulator: Masing/Ramberg–Osgood

@@ -106,7 +106,10 @@ class Part:
 
 
 def export_step(part: Part, path: Path) -> None:
-    cq.exporters.export(part.shape, str(path), exportType="STEP")
+    """One solid whose STEP product carries the part's name and colour (a plain shape export
+    would name it after the translator, "Open CASCADE STEP translator …")."""
+    single = cq.Assembly(part.shape, name=part.name, color=cq.Color(*part.color))
+    single.export(str(path), exportType="STEP", mode="fused")
 
 
 def export_stl(part: Part, path: Path, tolerance_mm: float = 0.05) -> None:

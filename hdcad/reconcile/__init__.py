@@ -1,4 +1,4 @@
-"""``hdcad reconcile``: where simulation and measured data disagree, and why (issue 5).
+"""``hdcad reconcile``: where simulation and measured data disagree, and why.
 
 The catalog model of a gear (stiffness, ratio, rated torque) predicts what a test rig should
 measure; this package finds where the measurement disagrees, names the physical effect the

@@ -1,6 +1,6 @@
 """Measured data for ``hdcad reconcile``: CSV reading and validation.
 
-Every kind has fixed column names (SI units in the name, issue 5); extra columns are ignored.
+Every kind has fixed column names (SI units in the name); extra columns are ignored.
 Bad files raise :class:`hdcad.errors.InputError` naming the column and the row, so the command
 line prints one line and exits 2.
 """

@@ -1,4 +1,4 @@
-"""Reconcile a catalog model with measured data (issue 5, steps 1-5).
+"""Reconcile a catalog model with measured data.
 
 1. Simulate the baseline (catalog model, its free offset refitted), compute the residual and
    estimate the noise from the data (:mod:`.noise`).
@@ -540,7 +540,7 @@ def _params(problem: Problem, fit: Fit, effect: str) -> dict[str, dict]:
 
 def reconcile(kind: str, data: dict, model: GearModel, catalog: Catalog,
               load_inertia_kgm2: float | None = None) -> Reconciliation:
-    """Find, name and add the effects the catalog model misses (issue 5, steps 1-5)."""
+    """Find, name and add the effects the catalog model misses."""
     data = validate_data(kind, data)
     base = baselines.build(kind, data, model, catalog, load_inertia_kgm2)
     problem = _problem(kind, base)
