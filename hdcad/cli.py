@@ -1,13 +1,16 @@
 """The ``hdcad`` command line.
 
-Exit codes: 0 every check passes (checks that cannot be evaluated are listed, not failed),
-1 a check fails, 2 bad input (one-line message naming the field and the allowed range).
-Commands that need no geometry never import cadquery.
+Exit codes: 0 every evaluated check passes (checks that cannot be evaluated are listed, not
+failed), 1 a check fails, 2 bad input or bad arguments (one line naming the file and field
+and the allowed range), 3 an internal error (one line; the traceback with --debug), 130
+interrupted (Ctrl-C). Commands that need no geometry never import cadquery.
 """
 
 from __future__ import annotations
 
 import argparse
+import os
+import signal
 import sys
 from typing import Sequence
 
@@ -15,7 +18,8 @@ from . import __version__
 from .errors import InputError
 from .report.format import check_label, fmt, margin_text, relation_text, status_text
 
-EXIT_OK, EXIT_FAIL, EXIT_INPUT = 0, 1, 2
+EXIT_OK, EXIT_FAIL, EXIT_INPUT, EXIT_INTERNAL, EXIT_INTERRUPTED = 0, 1, 2, 3, 130
+MESSAGE_LIMIT = 300  # characters of an error line; longer values are shortened
 
 
 def _table(headers: Sequence[str], rows: Sequence[Sequence[str]]) -> str:
@@ -29,6 +33,10 @@ def cmd_catalog(args) -> int:
     from .checks.fd import momentary_allowance
     from .models import list_models, resolve
     catalog = load_catalog(args.catalog_overlay)
+    if args.model:
+        from .catalog_view import model_lines
+        print("\n".join(model_lines(resolve(args.model, catalog), catalog)))
+        return EXIT_OK
     rows = []
     for code in list_models(catalog, args.series):
         m = resolve(code, catalog)
@@ -137,7 +145,8 @@ def _design_top(args, duty, catalog, codes: list[str]) -> int:
               file=sys.stderr, flush=True)
 
     print(f"building {len(codes)} design packets: {', '.join(codes)}", file=sys.stderr)
-    with batch_executor(args.jobs, args.scheduler) as executor:
+    from .parallel import running
+    with running(batch_executor(args.jobs, args.scheduler)) as executor:
         summaries = run_batch(codes, duty, options, catalog, out, executor, progress)
     index = write_index(summaries, duty.name, out)
     print(f"wrote {index} ({sum(s['built'] for s in summaries)} of {len(codes)} packets)")
@@ -154,10 +163,21 @@ def cmd_design(args) -> int:
     model = resolve(args.model, catalog)
     duty = load_duty(args.duty)
     options = load_options(args.design)
-    result = run_design(model, duty, options, catalog, args.out, parallel=True)
+    result = run_design(model, duty, options, catalog, args.out, parallel=True,
+                        progress=_stage_printer(args))
     print_evaluation(result.evaluation)
     print(f"wrote {result.folder}/: {', '.join(result.files)}")
     return EXIT_OK if result.evaluation.all_passed else EXIT_FAIL
+
+
+def _stage_printer(args):
+    """A line per finished stage on stderr: on a terminal, or when --progress asks for it."""
+    if args.quiet or not (args.progress or sys.stderr.isatty()):
+        return None
+
+    def stage(name: str, seconds: float) -> None:
+        print(f"  {name} done ({seconds:.1f} s)", file=sys.stderr, flush=True)
+    return stage
 
 
 def cmd_reconcile(args) -> int:
@@ -200,53 +220,82 @@ def print_reconciliation(result) -> None:
         print(f"  unexplained: {text}")
 
 
+SERIES = ["FD", "CSF-GH", "CSG-GH", "CSF", "CSG"]
+
+
 def _parser() -> argparse.ArgumentParser:
-    parser = argparse.ArgumentParser(prog="hdcad", description="Design guides for strain wave "
-                                     "gears: selection checks, housings, STEP, calc sheets.")
+    parser = argparse.ArgumentParser(
+        prog="hdcad", description="Design guides for strain wave gears: selection checks, "
+        "housings, STEP, calc sheets. Exit codes: 0 all evaluated checks pass, 1 a check "
+        "fails, 2 bad input, 3 internal error, 130 interrupted.")
     parser.add_argument("--version", action="version", version=f"hdcad {__version__}")
+    parser.add_argument("--debug", action="store_true",
+                        help="print the traceback of an internal error (exit 3)")
     sub = parser.add_subparsers(dest="command", required=True)
 
     def command(name: str, func, help_: str) -> argparse.ArgumentParser:
-        p = sub.add_parser(name, help=help_, description=help_)
+        p = sub.add_parser(name, help=help_, description=help_,
+                           formatter_class=argparse.ArgumentDefaultsHelpFormatter)
         p.add_argument("--catalog-overlay", metavar="FILE",
-                       help="YAML file adding catalog rows or tables the seeds lack")
+                       help="YAML file adding catalog rows or tables the seeds lack "
+                            "(see examples/overlay_example.yaml)")
+        p.add_argument("--debug", action="store_true", default=argparse.SUPPRESS,
+                       help="print the traceback of an internal error (exit 3)")
         p.set_defaults(func=func)
         return p
 
-    p = command("catalog", cmd_catalog, "List catalog models with their key ratings.")
-    p.add_argument("--series", choices=["FD", "CSF-GH", "CSG-GH", "CSF", "CSG"])
+    def duty(p) -> None:
+        p.add_argument("--duty", required=True, metavar="FILE",
+                       help="duty YAML file: load-torque cycle [N·m, s, r/min], max speeds "
+                            "[r/min], required life [h], lubrication (examples/*.yaml)")
+
+    p = command("catalog", cmd_catalog, "List catalog models with their key ratings, or "
+                                        "show every value of one model.")
+    p.add_argument("model", nargs="?", help="model code: show its full data, with sources "
+                                            "and (gear heads) the motor-flange codes")
+    p.add_argument("--series", choices=SERIES, help="only models of this series")
     p = command("check", cmd_check, "Run every selection check for one model and duty.")
     p.add_argument("model", help="model code, e.g. FD-25-80-2, CSF-45-120-GH, CSF-40-120-2A-GR")
-    p.add_argument("--duty", required=True, metavar="FILE", help="duty YAML file")
+    duty(p)
     p.add_argument("--json", metavar="FILE", help="also write the results as JSON")
     p = command("select", cmd_select, "Every catalog model that passes the duty, smallest first.")
-    p.add_argument("--duty", required=True, metavar="FILE", help="duty YAML file")
-    p.add_argument("--series", choices=["FD", "CSF-GH", "CSG-GH", "CSF", "CSG"])
+    duty(p)
+    p.add_argument("--series", choices=SERIES, help="only models of this series")
     p.add_argument("--json", metavar="FILE", help="also write the results as JSON")
     p.add_argument("--design-top", type=_positive_int, metavar="N",
                    help="build the design packets of the N smallest passing models into "
                         "--out DIR, in parallel, with DIR/index.html comparing them")
     p.add_argument("--out", metavar="DIR", help="output folder of --design-top: DIR/MODEL/")
-    p.add_argument("--design", metavar="FILE", help="design options YAML for --design-top")
+    p.add_argument("--design", metavar="FILE", help="design options YAML for --design-top "
+                                                    "(defaults: hdcad/design_options.py)")
     p.add_argument("--jobs", type=_positive_int, metavar="J",
                    help="parallel packet builds (default: one per core)")
     p.add_argument("--scheduler", metavar="ADDRESS",
                    help="run the packet builds on a Dask cluster, e.g. tcp://host:8786 "
                         "(needs the [cluster] extra)")
-    p = command("design", cmd_design, "Checks, housing/flange parts, STEP/STL/SVG and "
-                                      "results.json for one model.")
+    p = command("design", cmd_design, "Checks, housing/flange parts, STEP/STL/SVG, drawings, "
+                                      "calc sheet (PDF) and results.json for one model.")
     p.add_argument("model", help="model code, e.g. FD-25-80-2, FD-25-80-0, CSF-45-120-GH")
-    p.add_argument("--duty", required=True, metavar="FILE", help="duty YAML file")
-    p.add_argument("--design", metavar="FILE", help="design options YAML (defaults documented)")
+    duty(p)
+    p.add_argument("--design", metavar="FILE", help="design options YAML (defaults: "
+                                                    "hdcad/design_options.py, README)")
     p.add_argument("--out", required=True, metavar="DIR", help="output folder; writes DIR/MODEL/")
+    p.add_argument("--progress", action="store_true",
+                   help="a line per finished stage on stderr (default on a terminal)")
+    p.add_argument("--quiet", action="store_true", help="no stage lines")
     p = command("reconcile", cmd_reconcile, "Where measured data and the catalog model "
                                             "disagree, which effect is missing, and the gap "
                                             "with it added.")
-    p.add_argument("kind", choices=["torsion", "transmission", "efficiency", "vibration"])
-    p.add_argument("data", metavar="DATA.csv", help="measured data, CSV with a header row")
+    p.add_argument("kind", choices=["torsion", "transmission", "efficiency", "vibration"],
+                   help="test kind; columns: torsion torque_Nm,twist_rad; transmission "
+                        "input_angle_rad,output_angle_rad; efficiency input_speed_rpm,"
+                        "load_torque_Nm,temperature_C,efficiency_pct; vibration time_s,"
+                        "input_speed_rpm,output_vibration_rad")
+    p.add_argument("data", metavar="DATA.csv", help="measured data, CSV with a header row, SI "
+                                                    "units as in the column names")
     p.add_argument("--model", required=True, help="model code, e.g. CSF-32-100-GH")
-    p.add_argument("--load-inertia", type=float, metavar="KGM2",
-                   help="load inertia [kg·m²] (vibration)")
+    p.add_argument("--load-inertia", type=_finite_positive, metavar="KGM2",
+                   help="load inertia on the output [kg·m²] (vibration only)")
     p.add_argument("--json", metavar="FILE", help="also write the result as JSON")
     p.add_argument("--out", metavar="DIR", help="write plots and report.html/.pdf into DIR")
     return parser
@@ -262,16 +311,68 @@ def _positive_int(text: str) -> int:
     return value
 
 
-def main(argv: Sequence[str] | None = None) -> int:
-    args = _parser().parse_args(argv)
-    if getattr(args, "design_top", None) and not args.out:
-        print("hdcad: error: --design-top: needs --out DIR for the packets", file=sys.stderr)
-        return EXIT_INPUT
+def _finite_positive(text: str) -> float:
     try:
+        value = float(text)
+    except ValueError:
+        value = float("nan")
+    if not 0 < value <= 1e6:
+        raise argparse.ArgumentTypeError(f"must be a number in (0, 1e6] (got {text[:40]!r})")
+    return value
+
+
+def shorten(text: str, limit: int = MESSAGE_LIMIT) -> str:
+    """One line of at most ``limit`` characters: newlines joined, the middle elided."""
+    line = " ".join(str(text).split())
+    if len(line) <= limit:
+        return line
+    half = (limit - 5) // 2
+    return f"{line[:half]} … {line[-half:]}"
+
+
+_interrupted = False
+
+
+def _on_interrupt(signum, frame) -> None:
+    # remembered: an interrupt inside a C extension's import can surface as ImportError
+    global _interrupted
+    _interrupted = True
+    raise KeyboardInterrupt
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    argv = sys.argv[1:] if argv is None else list(argv)
+    debug = "--debug" in argv
+    if signal.getsignal(signal.SIGINT) is signal.default_int_handler:
+        signal.signal(signal.SIGINT, _on_interrupt)
+    try:
+        args = _parser().parse_args(argv)
+        if getattr(args, "design_top", None) and not args.out:
+            raise InputError("--design-top", "needs --out DIR for the packets")
         return args.func(args)
     except InputError as exc:
-        print(f"hdcad: error: {exc}", file=sys.stderr)
+        print(f"hdcad: error: {shorten(exc)}", file=sys.stderr)
         return EXIT_INPUT
+    except KeyboardInterrupt:
+        print("hdcad: interrupted", file=sys.stderr)
+        return EXIT_INTERRUPTED
+    except BrokenPipeError:
+        # the reader closed the pipe (`hdcad catalog | head`): what it wanted was printed
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+        return EXIT_OK
+    except SystemExit as exc:  # argparse: exit 2 on bad arguments, 0 after --help
+        return exc.code if isinstance(exc.code, int) else EXIT_INPUT
+    except Exception as exc:  # noqa: BLE001 - the contract: never a bare traceback
+        if _interrupted:
+            print("hdcad: interrupted", file=sys.stderr)
+            return EXIT_INTERRUPTED
+        if debug:
+            import traceback
+            traceback.print_exc()
+        print(f"hdcad: internal error: {shorten(f'{type(exc).__name__}: {exc}', 200)}"
+              + ("" if debug else " (run with --debug for the traceback)"), file=sys.stderr)
+        return EXIT_INTERNAL
 
 
 if __name__ == "__main__":

@@ -88,15 +88,18 @@ def _oil_level(model: GearModel, catalog: Catalog) -> tuple[float | None, str]:
 class _Clock:
     """Wall time of each stage of a design run (reported by benchmarks/bench_design.py)."""
 
-    def __init__(self):
+    def __init__(self, progress=None):
         self.laps: dict[str, float] = {}
         self._last = time.perf_counter()
+        self._progress = progress
 
     def lap(self, name: str, value=None):
         """Close the stage ``name`` (evaluated just before this call); passes ``value`` on."""
         now = time.perf_counter()
         self.laps[name] = now - self._last
         self._last = now
+        if self._progress:
+            self._progress(name, self.laps[name])
         return value
 
 
@@ -134,21 +137,23 @@ def _part_record(part, mass_kg: float) -> dict:
 
 
 def run_design(model: GearModel, duty: Duty, options: DesignOptions, catalog: Catalog,
-               out_dir: Path, parallel: bool = False) -> DesignResult:
+               out_dir: Path, parallel: bool = False, progress=None) -> DesignResult:
     """Build, check and export ``model``; returns what was written.
 
     ``parallel``: plots and the PDF in a side process while the CAD chain runs (False inside
-    a batch whose designs already run in parallel).
+    a batch whose designs already run in parallel). ``progress(stage, seconds)`` is called
+    as each stage ends.
     """
     from .output import json_text, staged_dir
-    from .parallel import side_executor
+    from .parallel import running, side_executor
     from .report.sheet import make_bolt_figures, make_figures, warm_up, write_calc_sheet
 
-    clock = _Clock()
+    clock = _Clock(progress)
     evaluation = run_checks(model, duty, catalog, options.input_thrust_capacity_N)
     clock.lap("checks")
     target = Path(out_dir) / model.code
-    with side_executor(parallel) as side, staged_dir(target) as stage:
+    # the side process stops before the staging folder is removed on an error or Ctrl-C
+    with staged_dir(target) as stage, running(side_executor(parallel)) as side:
         # the report chain (matplotlib, WeasyPrint) runs beside the CAD chain until the PDF
         plots = side.submit(make_figures, evaluation, stage)
         side.submit(warm_up)

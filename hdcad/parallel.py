@@ -13,7 +13,10 @@ from __future__ import annotations
 import multiprocessing
 import os
 import signal
+import threading
 from concurrent.futures import Executor, Future, ProcessPoolExecutor
+from contextlib import contextmanager
+from typing import Iterator
 
 
 class InlineExecutor(Executor):
@@ -28,10 +31,42 @@ class InlineExecutor(Executor):
         return future
 
 
-def _ignore_interrupt() -> None:
-    # Ctrl-C reaches the whole process group: the parent handles it (exit 130, staging
-    # folder removed); a worker that also raised KeyboardInterrupt would print a traceback
-    signal.signal(signal.SIGINT, signal.SIG_IGN)
+@contextmanager
+def interrupts_ignored() -> Iterator[None]:
+    """SIGINT ignored in this block (main thread only); processes started here inherit it.
+
+    Ctrl-C reaches the whole process group: the parent handles it (exit 130, staging folder
+    removed); a worker that raised KeyboardInterrupt too would print a traceback. A worker
+    started while SIGINT is ignored keeps ignoring it from its first instruction.
+    """
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    previous = signal.signal(signal.SIGINT, signal.SIG_IGN)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGINT, previous)
+
+
+class QuietProcessPool(ProcessPoolExecutor):
+    """A process pool whose workers (started on demand by submit) ignore Ctrl-C."""
+
+    def submit(self, fn, /, *args, **kwargs) -> Future:
+        with interrupts_ignored():
+            return super().submit(fn, *args, **kwargs)
+
+
+@contextmanager
+def running(executor: Executor) -> Iterator[Executor]:
+    """Use ``executor`` in a with-block; on an error or Ctrl-C, jobs not started are
+    cancelled and the running one is waited for, so nothing writes after the block."""
+    try:
+        yield executor
+    except BaseException:
+        executor.shutdown(wait=True, cancel_futures=True)
+        raise
+    executor.shutdown(wait=True)
 
 
 def cores() -> int:
@@ -44,8 +79,7 @@ def cores() -> int:
 
 def process_pool(workers: int) -> ProcessPoolExecutor:
     """A pool of fresh interpreters (spawn: no state inherited) that ignore Ctrl-C."""
-    return ProcessPoolExecutor(max_workers=workers, initializer=_ignore_interrupt,
-                               mp_context=multiprocessing.get_context("spawn"))
+    return QuietProcessPool(max_workers=workers, mp_context=multiprocessing.get_context("spawn"))
 
 
 def side_executor(parallel: bool = True) -> Executor:

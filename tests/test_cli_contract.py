@@ -1,0 +1,114 @@
+"""The command line's contract: exit codes 0/1/2/3/130, one-line messages, no tracebacks,
+help for every option, a quiet broken pipe, `hdcad catalog MODEL`, stage lines."""
+
+from __future__ import annotations
+
+import argparse
+import os
+import signal
+import subprocess
+import sys
+import time
+
+import pytest
+
+from hdcad import cli
+from hdcad.resources import examples_dir
+
+DUTY = str(examples_dir() / "duty_seed_example.yaml")
+HDCAD = [sys.executable, "-m", "hdcad.cli"]
+
+
+def _boom(args):
+    raise ZeroDivisionError("division by zero in a check")
+
+
+def test_an_internal_error_is_one_line_and_exit_3(monkeypatch, capsys):
+    monkeypatch.setattr(cli, "cmd_check", _boom)
+    assert cli.main(["check", "CSF-45-120-GH", "--duty", DUTY]) == 3
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "Traceback" not in err
+    assert "ZeroDivisionError" in err and "--debug" in err
+
+
+def test_debug_prints_the_traceback(monkeypatch, capsys):
+    monkeypatch.setattr(cli, "cmd_check", _boom)
+    assert cli.main(["--debug", "check", "CSF-45-120-GH", "--duty", DUTY]) == 3
+    assert "Traceback" in capsys.readouterr().err
+
+
+def test_ctrl_c_is_exit_130(monkeypatch, capsys):
+    def interrupted(args):
+        raise KeyboardInterrupt
+    monkeypatch.setattr(cli, "cmd_select", interrupted)
+    assert cli.main(["select", "--duty", DUTY]) == 130
+    assert "interrupted" in capsys.readouterr().err
+
+
+def test_bad_arguments_are_exit_2(capsys):
+    assert cli.main(["check"]) == 2
+    assert cli.main(["reconcile", "vibration", "x.csv", "--model", "CSF-32-100-GH",
+                     "--load-inertia", "inf"]) == 2
+    assert "--load-inertia" in capsys.readouterr().err
+
+
+def test_long_values_are_shortened_in_error_lines():
+    line = cli.shorten("x" * 5000 + "\nsecond line")
+    assert len(line) <= cli.MESSAGE_LIMIT and "\n" not in line and "…" in line
+
+
+def test_every_option_has_help():
+    parser = cli._parser()
+    sub = next(a for a in parser._actions if isinstance(a, argparse._SubParsersAction))
+    missing = [f"{name} {opt.dest}" for name, p in sub.choices.items() for opt in p._actions
+               if not isinstance(opt, argparse._HelpAction) and not opt.help]
+    assert not missing
+
+
+def test_a_closed_pipe_ends_quietly():
+    done = subprocess.run(" ".join(HDCAD) + " catalog | head -n 1", shell=True,
+                          capture_output=True, text=True, executable="/bin/bash")
+    assert done.stdout.startswith("hdcad catalog") and done.stderr == ""
+
+
+def test_catalog_model_lists_the_motor_flange_codes(capsys):
+    assert cli.main(["catalog", "CSF-45-120-GH"]) == 0
+    out = capsys.readouterr().out
+    # seed 003 table 064-1: PP = pilot 114.3 H7, M12 × 25 on φ200, □180
+    pp = next(line for line in out.splitlines() if line.startswith("PP "))
+    assert "114.3" in pp and "200" in pp and "M12 × 25" in pp and "180" in pp
+    assert "momentary_torque_Nm" in out and "table 050-1/058-1" in out
+
+
+def test_design_prints_a_line_per_stage(tmp_path):
+    pytest.importorskip("cadquery")
+    done = subprocess.run(HDCAD + ["design", "CSF-45-120-GH", "--duty", DUTY, "--out",
+                                   str(tmp_path), "--progress"], capture_output=True, text=True)
+    assert done.returncode == 0
+    stages = [line for line in done.stderr.splitlines() if line.strip().endswith(" s)")]
+    assert [s.split()[0] for s in stages][:2] == ["checks", "build"] and len(stages) >= 5
+
+
+def _own_group_with_default_sigint():
+    # a job started in the background inherits SIGINT ignored: give the child the default,
+    # and its own process group so that Ctrl-C can be sent to all of it as a terminal does
+    signal.signal(signal.SIGINT, signal.SIG_DFL)
+    os.setsid()
+
+
+# 0.3 s: inside the imports (an interrupt there can surface as an ImportError);
+# 2.5 s: CAD built, the side process drawing the plots and the PDF
+@pytest.mark.parametrize("delay_s", [0.3, 2.5])
+def test_ctrl_c_during_a_design_leaves_nothing_behind(tmp_path, delay_s):
+    pytest.importorskip("cadquery")
+    proc = subprocess.Popen(HDCAD + ["design", "CSF-45-120-GH", "--duty", DUTY, "--out",
+                                     str(tmp_path)], stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE, text=True,
+                            preexec_fn=_own_group_with_default_sigint)
+    time.sleep(delay_s)
+    os.killpg(proc.pid, signal.SIGINT)
+    out, err = proc.communicate(timeout=60)
+    if proc.returncode == 0:
+        pytest.skip("the design finished before the interrupt (a very fast machine)")
+    assert proc.returncode == 130, err
+    assert err.strip() == "hdcad: interrupted" and os.listdir(tmp_path) == []
