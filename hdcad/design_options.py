@@ -36,6 +36,7 @@ class DesignOptions:
     running_gap_mm: float = 1.0          # axial gap between the two rotating FD casing halves
     input_thrust_capacity_N: float | None = None  # axial capacity of the user's input support
     extra: dict = field(default_factory=dict)
+    given: tuple[str, ...] = ()  # the options the design file set (the rest are defaults)
 
     @property
     def density_kg_m3(self) -> float:
@@ -76,7 +77,7 @@ def parse_options(raw: Any) -> DesignOptions:
             if not isinstance(value, str) or not value.strip():
                 raise InputError(key, f"must be a flange code such as KG (got {value!r})")
             values[key] = value.strip().upper()
-    return DesignOptions(**values)
+    return DesignOptions(**values, given=tuple(sorted(values)))
 
 
 def load_options(path: str | Path | None) -> DesignOptions:

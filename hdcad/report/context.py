@@ -13,7 +13,6 @@ from datetime import date
 
 from .. import __version__
 from ..catalog import Catalog
-from ..design_options import DesignOptions
 from ..models import parse_code
 from ..sources import source_text
 from .bom import BomRow
@@ -106,10 +105,17 @@ def duty_extras(duty: dict) -> list[tuple[str, str]]:
     return rows
 
 
+OPTION_NONE = {"motor_flange": "first complete code of the table (part notes name it)",
+               "input_shaft_mm": "not given", "input_thrust_capacity_N": "not given"}
+
+
 def option_rows(options: dict) -> list[dict]:
-    defaults = DesignOptions().as_dict()
-    return [{"key": k, "value": fmt(v), "unit": OPTION_UNITS.get(k, ""),
-             "default": v == defaults.get(k)} for k, v in options.items() if k != "extra"]
+    """Each design option with its value and whether the design file set it."""
+    given = set(options.get("given") or ())
+    return [{"key": k, "unit": "" if v is None else OPTION_UNITS.get(k, ""),
+             "default": k not in given,
+             "value": OPTION_NONE.get(k, "—") if v is None else fmt(v)}
+            for k, v in options.items() if k not in ("extra", "given")]
 
 
 def check_row(c: dict) -> dict:
