@@ -155,3 +155,10 @@ def test_nothing_is_named_on_the_catalog_model_plus_noise():
     result = reconcile("transmission", data, resolve("CSF-32-100-GH", catalog), catalog)
     assert result.missing_effects == [] and result.steps == []
     assert result.rmse_after == result.rmse_before
+
+
+def test_region_verdicts_read_before_and_after():
+    from hdcad.reconcile.report import region_verdict
+    assert region_verdict(True, False) == "disagreed → explained"
+    assert region_verdict(True, True) == "disagreed → still disagrees"
+    assert region_verdict(False, False) == ""

@@ -124,7 +124,8 @@ def report_context(result: Reconciliation, figures: list[dict]) -> dict:
               for r in result.candidates]
     regions = [{"where": r["where"], "before": fmt(r["rms_before"], unit),
                 "after": fmt(r["rms_after"], unit),
-                "flag": "disagrees" if r["significant"] else ""} for r in result.regions]
+                "flag": region_verdict(r["significant"], r.get("significant_after", False))}
+               for r in result.regions]
     return {
         "kind": result.kind, "model": result.model, "unit": unit,
         "noise": fmt(result.noise_rms, unit),
@@ -138,6 +139,13 @@ def report_context(result: Reconciliation, figures: list[dict]) -> dict:
         "steps": steps, "rounds": rounds, "regions": regions,
         "unexplained": result.unexplained, "notes": result.notes, "figures": figures,
     }
+
+
+def region_verdict(before: bool, after: bool) -> str:
+    """Before → after reading of one region: the baseline against the reconciled model."""
+    if before:
+        return "disagreed → still disagrees" if after else "disagreed → explained"
+    return "new disagreement" if after else ""
 
 
 def write_report(result: Reconciliation, folder: Path) -> list[str]:

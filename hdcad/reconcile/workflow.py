@@ -587,11 +587,12 @@ def reconcile(kind: str, data: dict, model: GearModel, catalog: Catalog,
     disagreements += [{"where": f"{k} cycle(s) per WG revolution", "rms": rms,
                        "noise_rms": sigma} for k, rms, sig in harm0 if sig]
     unexplained = _unexplained(problem, final, sigma, tau, harm1, current)
-    regions = [{"where": label, "rms_before": b, "rms_after": a, "significant": s}
-               for label, b, a, s in table]
+    after = {label: sig for label, _, _, sig in _region_table(problem, final, final, sigma, tau)}
+    regions = [{"where": label, "rms_before": b, "rms_after": a, "significant": s,
+                "significant_after": after.get(label, False)} for label, b, a, s in table]
     regions += [{"where": f"{k} cycle(s) per WG revolution", "rms_before": r0,
-                 "rms_after": r1, "significant": s0}
-                for (k, r0, s0), (_, r1, _) in zip(harm0, harm1)]
+                 "rms_after": r1, "significant": s0, "significant_after": s1}
+                for (k, r0, s0), (_, r1, s1) in zip(harm0, harm1)]
     return Reconciliation(
         kind=kind, model=model.code, disagreements=disagreements,
         missing_effects=[s.effect for s in steps], rmse_before=_rmse(resid0),
