@@ -25,13 +25,14 @@ INDEX_CHECKS = ("avg_torque", "peak_torque", "momentary_torque", "max_input_spee
 
 
 def design_packet(code: str, duty: Duty, options: DesignOptions, catalog: Catalog,
-                  out_dir: str) -> dict:
+                  out_dir: str, force: bool = False) -> dict:
     """Build the packet ``out_dir/code/`` and return its summary (see ``packet_summary``)."""
     from .design import run_design
     from .models import resolve
     start = time.perf_counter()
     try:
-        result = run_design(resolve(code, catalog), duty, options, catalog, Path(out_dir))
+        result = run_design(resolve(code, catalog), duty, options, catalog, Path(out_dir),
+                            force=force)
     except InputError as error:
         return {"model": code, "built": False, "error": str(error),
                 "seconds": time.perf_counter() - start}
@@ -59,10 +60,11 @@ def packet_summary(result) -> dict:
 
 def run_batch(codes: list[str], duty: Duty, options: DesignOptions, catalog: Catalog,
               out_dir: Path, executor: Executor,
-              progress: Callable[[int, int, dict], None] | None = None) -> list[dict]:
+              progress: Callable[[int, int, dict], None] | None = None,
+              force: bool = False) -> list[dict]:
     """One packet per model code through ``executor``; summaries in the order of ``codes``."""
-    futures = {executor.submit(design_packet, code, duty, options, catalog, str(out_dir)): code
-               for code in codes}
+    futures = {executor.submit(design_packet, code, duty, options, catalog, str(out_dir),
+                               force): code for code in codes}
     done: dict[str, dict] = {}
     for future in as_completed(futures):
         summary = future.result()

@@ -64,6 +64,11 @@ OVERLAY_ONLY_TABLES: dict[str, tuple[tuple[str, ...], tuple[str, ...]]] = {
         ("series", "size"),
     ),
 }
+# Overlay values that divide or scale a check (ratings, stiffness, bearing data, sizes) must be
+# > 0: a zero would end in a division by zero or a meaningless margin.
+POSITIVE_UNITS = ("Nm", "Nm_per_rad", "rpm", "N", "mm", "kgm2", "rad", "m", "pct", "h", "kg")
+BEARING_TYPES = ("cross_roller", "four_point")  # life exponent 10/3 and 3 (seed 002)
+
 # Key columns of the shipped tables: an overlay row with the same key replaces the row.
 TABLE_KEYS: dict[str, tuple[str, ...]] = {
     "fd_ratios": ("size", "ratio"),
@@ -263,13 +268,9 @@ def load_catalog(overlay: str | Path | None = None) -> Catalog:
 
 def apply_overlay(tables: dict[str, Table], path: Path) -> None:
     """Validate ``path`` and merge its rows into ``tables`` (in place)."""
+    from .safe_io import load_yaml
     field_ = "--catalog-overlay"
-    if not path.is_file():
-        raise InputError(field_, f"file not found: {path}")
-    try:
-        doc = yaml.safe_load(path.read_text(encoding="utf-8"))
-    except yaml.YAMLError as exc:
-        raise InputError(field_, f"{path.name} is not valid YAML ({_yaml_line(exc)})") from None
+    doc = load_yaml(path, field_)
     if not isinstance(doc, dict) or not isinstance(doc.get("tables"), dict):
         raise InputError(field_, f"{path.name} must be a mapping with 'source' and 'tables'")
     source = doc.get("source")
@@ -305,12 +306,20 @@ def _merge_rows(tables: dict[str, Table], name: str, rows: list[dict], where: st
         if missing:
             raise InputError(row_where, f"missing key column(s) {', '.join(missing)}")
         row = {c: _parse_cell(c, raw.get(c), row_where) for c in (columns or tuple(raw))}
+        _check_overlay_row(name, row, row_where)
         row["source"] = f"{source}" + (f" ({raw['source']})" if raw.get("source") else "")
         if keys:
             table.rows = [r for r in table.rows if any(r.get(k) != row.get(k) for k in keys)]
         table.rows.append(row)
 
 
-def _yaml_line(exc: yaml.YAMLError) -> str:
-    mark = getattr(exc, "problem_mark", None)
-    return f"line {mark.line + 1}" if mark is not None else "parse error"
+def _check_overlay_row(table: str, row: dict, where: str) -> None:
+    """An overlay row holds what the shipped tables hold: positive physical values and, for
+    main bearings, a known bearing type."""
+    for column, value in row.items():
+        if (isinstance(value, (int, float)) and value <= 0
+                and (_unit_of(column) in POSITIVE_UNITS or column in INTEGER_COLUMNS)):
+            raise InputError(f"{where}.{column}", f"must be > 0 (got {value!r})")
+    if table == "main_bearing" and row.get("bearing_type") not in BEARING_TYPES:
+        raise InputError(f"{where}.bearing_type", f"must be one of {', '.join(BEARING_TYPES)} "
+                                                  f"(got {str(row.get('bearing_type'))[:40]!r})")

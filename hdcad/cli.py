@@ -147,7 +147,8 @@ def _design_top(args, duty, catalog, codes: list[str]) -> int:
     print(f"building {len(codes)} design packets: {', '.join(codes)}", file=sys.stderr)
     from .parallel import running
     with running(batch_executor(args.jobs, args.scheduler)) as executor:
-        summaries = run_batch(codes, duty, options, catalog, out, executor, progress)
+        summaries = run_batch(codes, duty, options, catalog, out, executor, progress,
+                              args.force)
     index = write_index(summaries, duty.name, out)
     print(f"wrote {index} ({sum(s['built'] for s in summaries)} of {len(codes)} packets)")
     return EXIT_OK if any(s["built"] and s["all_passed"] for s in summaries) else EXIT_FAIL
@@ -164,7 +165,7 @@ def cmd_design(args) -> int:
     duty = load_duty(args.duty)
     options = load_options(args.design)
     result = run_design(model, duty, options, catalog, args.out, parallel=True,
-                        progress=_stage_printer(args))
+                        progress=_stage_printer(args), force=args.force)
     print_evaluation(result.evaluation)
     print(f"wrote {result.folder}/: {', '.join(result.files)}")
     return EXIT_OK if result.evaluation.all_passed else EXIT_FAIL
@@ -189,6 +190,10 @@ def cmd_reconcile(args) -> int:
     model = resolve(args.model, catalog)
     if args.kind == "vibration" and args.load_inertia is None:
         raise InputError("--load-inertia", "vibration needs the load inertia [kg·m²]")
+    if args.out is not None:
+        from pathlib import Path
+        from .output import check_target
+        check_target(Path(args.out), args.force)
     data = read_data(args.kind, args.data)
     result = reconcile(args.kind, data, model, catalog, args.load_inertia)
     print_reconciliation(result)
@@ -196,7 +201,7 @@ def cmd_reconcile(args) -> int:
         write_text_atomic(args.json, json_text(result.as_dict()))
     if args.out:
         from .reconcile.report import write_report
-        with staged_dir(args.out) as folder:
+        with staged_dir(args.out, args.force) as folder:
             files = write_report(result, folder)
         print(f"wrote {args.out}/: {', '.join(files)}")
     return EXIT_OK
@@ -244,6 +249,11 @@ def _parser() -> argparse.ArgumentParser:
         p.set_defaults(func=func)
         return p
 
+    def force(p) -> None:
+        p.add_argument("--force", action="store_true",
+                       help="replace an output folder that holds files hdcad did not write "
+                            "(refused otherwise, exit 2)")
+
     def duty(p) -> None:
         p.add_argument("--duty", required=True, metavar="FILE",
                        help="duty YAML file: load-torque cycle [N·m, s, r/min], max speeds "
@@ -273,6 +283,7 @@ def _parser() -> argparse.ArgumentParser:
     p.add_argument("--scheduler", metavar="ADDRESS",
                    help="run the packet builds on a Dask cluster, e.g. tcp://host:8786 "
                         "(needs the [cluster] extra)")
+    force(p)
     p = command("design", cmd_design, "Checks, housing/flange parts, STEP/STL/SVG, drawings, "
                                       "calc sheet (PDF) and results.json for one model.")
     p.add_argument("model", help="model code, e.g. FD-25-80-2, FD-25-80-0, CSF-45-120-GH")
@@ -283,6 +294,7 @@ def _parser() -> argparse.ArgumentParser:
     p.add_argument("--progress", action="store_true",
                    help="a line per finished stage on stderr (default on a terminal)")
     p.add_argument("--quiet", action="store_true", help="no stage lines")
+    force(p)
     p = command("reconcile", cmd_reconcile, "Where measured data and the catalog model "
                                             "disagree, which effect is missing, and the gap "
                                             "with it added.")
@@ -298,6 +310,7 @@ def _parser() -> argparse.ArgumentParser:
                    help="load inertia on the output [kg·m²] (vibration only)")
     p.add_argument("--json", metavar="FILE", help="also write the result as JSON")
     p.add_argument("--out", metavar="DIR", help="write plots and report.html/.pdf into DIR")
+    force(p)
     return parser
 
 

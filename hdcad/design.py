@@ -137,23 +137,27 @@ def _part_record(part, mass_kg: float) -> dict:
 
 
 def run_design(model: GearModel, duty: Duty, options: DesignOptions, catalog: Catalog,
-               out_dir: Path, parallel: bool = False, progress=None) -> DesignResult:
+               out_dir: Path, parallel: bool = False, progress=None,
+               force: bool = False) -> DesignResult:
     """Build, check and export ``model``; returns what was written.
 
     ``parallel``: plots and the PDF in a side process while the CAD chain runs (False inside
     a batch whose designs already run in parallel). ``progress(stage, seconds)`` is called
-    as each stage ends.
+    as each stage ends. ``force``: replace ``out_dir/MODEL`` even when it holds files hdcad
+    did not write (otherwise an InputError before any work).
     """
     from .output import json_text, staged_dir
     from .parallel import running, side_executor
     from .report.sheet import make_bolt_figures, make_figures, warm_up, write_calc_sheet
 
+    from .output import check_target
+    check_target(Path(out_dir) / model.code, force)
     clock = _Clock(progress)
     evaluation = run_checks(model, duty, catalog, options.input_thrust_capacity_N)
     clock.lap("checks")
     target = Path(out_dir) / model.code
     # the side process stops before the staging folder is removed on an error or Ctrl-C
-    with staged_dir(target) as stage, running(side_executor(parallel)) as side:
+    with staged_dir(target, force) as stage, running(side_executor(parallel)) as side:
         # the report chain (matplotlib, WeasyPrint) runs beside the CAD chain until the PDF
         plots = side.submit(make_figures, evaluation, stage)
         side.submit(warm_up)

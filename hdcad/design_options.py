@@ -11,7 +11,6 @@ from dataclasses import dataclass, asdict, field
 from pathlib import Path
 from typing import Any
 
-import yaml
 
 from .errors import InputError
 
@@ -81,13 +80,8 @@ def parse_options(raw: Any) -> DesignOptions:
 
 
 def load_options(path: str | Path | None) -> DesignOptions:
+    """Read and validate a design-options YAML file (None: the defaults)."""
+    from .safe_io import load_yaml
     if path is None:
         return DesignOptions()
-    path = Path(path)
-    try:
-        raw = yaml.safe_load(path.read_text(encoding="utf-8"))
-    except OSError as exc:
-        raise InputError("--design", f"cannot read {path}: {exc.__class__.__name__}") from None
-    except yaml.YAMLError:
-        raise InputError("--design", f"{path.name} is not valid YAML") from None
-    return parse_options(raw)
+    return parse_options(load_yaml(Path(path), "--design"))

@@ -8,6 +8,7 @@ line prints one line and exits 2.
 from __future__ import annotations
 
 import csv
+import io
 import math
 from pathlib import Path
 
@@ -43,17 +44,17 @@ def read_data(kind: str, path) -> dict[str, np.ndarray]:
     Raises InputError for a missing file or column, a non-numeric or non-finite cell (naming
     its column and line), too few rows, or values the kind cannot use.
     """
+    from ..safe_io import read_text
     check_kind(kind)
     path = Path(path)
+    # 200 MB: ten million rows of a few columns; a regular UTF-8 file only
+    text = read_text(path, "DATA.csv", max_bytes=200 * 1024 * 1024)
     try:
-        with path.open(newline="", encoding="utf-8-sig") as fh:
-            reader = csv.reader(fh)
-            header = [h.strip() for h in next(reader, [])]
-            columns = _column_indices(kind, header, path.name)
-            rows = [row for row in reader if any(cell.strip() for cell in row)]
-    except OSError as exc:
-        raise InputError("DATA.csv", f"cannot read {path}: {exc.strerror or exc}") from None
-    except (UnicodeDecodeError, csv.Error) as exc:
+        reader = csv.reader(io.StringIO(text, newline=""))
+        header = [h.strip() for h in next(reader, [])]
+        columns = _column_indices(kind, header, path.name)
+        rows = [row for row in reader if any(cell.strip() for cell in row)]
+    except csv.Error as exc:
         raise InputError("DATA.csv", f"{path.name} is not a CSV text file ({exc})") from None
     return validate_data(kind, _parse(rows, columns, path.name))
 
