@@ -6,13 +6,11 @@ used. Bad values raise InputError naming the key and what is allowed.
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, asdict, field
 from pathlib import Path
 from typing import Any
 
 
-from .errors import InputError
 
 # Density [kg/m³] of common housing materials (handbook values: EN 10025 structural steel,
 # EN 573 aluminium alloys, EN 1561 grey cast iron).
@@ -45,37 +43,15 @@ class DesignOptions:
         return asdict(self)
 
 
-_NUMBERS = {"input_shaft_mm": (1.0, 200.0), "wall_mm": (2.0, 60.0),
-            "friction_coefficient": (0.05, 0.5), "bolt_safety_factor": (1.0, 5.0),
-            "running_gap_mm": (0.2, 5.0), "input_thrust_capacity_N": (0.0, 1e7)}
-_CHOICES = {"material": tuple(MATERIALS), "bolt_class": BOLT_CLASSES, "axis": AXES}
-
-
 def parse_options(raw: Any) -> DesignOptions:
+    """Validate a design-options mapping (schema ``hdcad.schema.DesignOptionsIn``)."""
+    from .schema import DesignOptionsIn, validated
     if raw is None:
         return DesignOptions()
-    if not isinstance(raw, dict):
-        raise InputError("design", "must be a mapping of option: value")
-    allowed = set(_NUMBERS) | set(_CHOICES) | {"motor_flange"}
-    values: dict[str, Any] = {}
-    for key, value in raw.items():
-        if key not in allowed:
-            raise InputError(str(key), f"unknown design option; allowed: {', '.join(sorted(allowed))}")
-        if key in _NUMBERS:
-            low, high = _NUMBERS[key]
-            ok = (isinstance(value, (int, float)) and not isinstance(value, bool)
-                  and math.isfinite(value) and low <= value <= high)
-            if not ok:
-                raise InputError(key, f"must be a number in [{low:g}, {high:g}] (got {value!r})")
-            values[key] = float(value)
-        elif key in _CHOICES:
-            if str(value) not in _CHOICES[key]:
-                raise InputError(key, f"must be one of {', '.join(_CHOICES[key])} (got {value!r})")
-            values[key] = str(value)
-        else:
-            if not isinstance(value, str) or not value.strip():
-                raise InputError(key, f"must be a flange code such as KG (got {value!r})")
-            values[key] = value.strip().upper()
+    checked = validated(DesignOptionsIn, raw, "")
+    values = {k: getattr(checked, k) for k in checked.model_fields_set}
+    if values.get("motor_flange") is not None:
+        values["motor_flange"] = values["motor_flange"].strip().upper()
     return DesignOptions(**values, given=tuple(sorted(values)))
 
 
