@@ -152,3 +152,21 @@ def test_a_non_utf8_file_is_bad_input(tmp_path, capsys):
     path.write_bytes("cycle: é\n".encode("latin-1"))
     assert main(["check", "CSF-45-120-GH", "--duty", str(path)]) == 2
     assert "UTF-8" in capsys.readouterr().err
+
+
+def test_a_killed_design_leaves_only_a_staging_folder_that_the_next_run_removes(tmp_path):
+    pytest.importorskip("cadquery")
+    import signal
+    import time
+    cmd = [sys.executable, "-m", "hdcad.cli", "design", "CSF-45-120-GH", "--duty", DUTY,
+           "--out", str(tmp_path), "--quiet"]
+    proc = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    deadline = time.time() + 30
+    while not list(tmp_path.glob(".CSF-45-120-GH.staging-*")) and time.time() < deadline:
+        time.sleep(0.05)
+    time.sleep(0.5)
+    proc.send_signal(signal.SIGKILL)  # no chance to clean up
+    proc.wait()
+    assert not (tmp_path / "CSF-45-120-GH").exists()
+    assert subprocess.run(cmd, capture_output=True).returncode == 0
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["CSF-45-120-GH"]

@@ -162,3 +162,30 @@ def test_region_verdicts_read_before_and_after():
     assert region_verdict(True, False) == "disagreed → explained"
     assert region_verdict(True, True) == "disagreed → still disagrees"
     assert region_verdict(False, False) == ""
+
+
+@pytest.mark.parametrize("column, factor, words", [
+    ("twist_rad", 180 / math.pi, "degrees instead of radians"),
+    ("torque_Nm", 1e-3, "kN·m"),
+])
+def test_data_in_wrong_units_is_bad_input_not_an_effect(tmp_path, capsys, column, factor,
+                                                        words):
+    import csv
+    from hdcad.resources import examples_dir
+    rows = list(csv.DictReader(open(examples_dir() / "reconcile_torsion_synthetic.csv")))
+    path = tmp_path / "scaled.csv"
+    with open(path, "w", newline="") as fh:
+        writer = csv.DictWriter(fh, fieldnames=list(rows[0]))
+        writer.writeheader()
+        for r in rows:
+            writer.writerow(dict(r, **{column: repr(float(r[column]) * factor)}))
+    code = main(["reconcile", "torsion", str(path), "--model", "CSF-32-100-GH"])
+    err = capsys.readouterr().err
+    assert code == 2 and words in err and err.count("\n") == 1
+
+
+def test_efficiency_as_a_fraction_is_bad_input():
+    from hdcad.reconcile.units import check_units
+    from types import SimpleNamespace
+    with pytest.raises(InputError, match="fraction"):
+        check_units("efficiency", SimpleNamespace(y=np.full(50, 0.82)))

@@ -35,6 +35,7 @@ from scipy.optimize import least_squares, lsq_linear
 from ..catalog import Catalog
 from ..models import GearModel
 from . import baseline as baselines
+from .units import check_units
 from . import effects as fx
 from .data import validate_data
 from .noise import correlation_time, noise_rms
@@ -543,6 +544,7 @@ def reconcile(kind: str, data: dict, model: GearModel, catalog: Catalog,
     """Find, name and add the effects the catalog model misses."""
     data = validate_data(kind, data)
     base = baselines.build(kind, data, model, catalog, load_inertia_kgm2)
+    check_units(kind, base)
     problem = _problem(kind, base)
     # 1. baseline with its free parameters, residual, noise from the data itself
     current = fit_model(problem, ())
