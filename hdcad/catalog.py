@@ -67,7 +67,7 @@ OVERLAY_ONLY_TABLES: dict[str, tuple[tuple[str, ...], tuple[str, ...]]] = {
 # Overlay values that divide or scale a check (ratings, stiffness, bearing data, sizes) must be
 # > 0: a zero would end in a division by zero or a meaningless margin.
 POSITIVE_UNITS = ("Nm", "Nm_per_rad", "rpm", "N", "mm", "kgm2", "rad", "m", "pct", "h", "kg")
-BEARING_TYPES = ("cross_roller", "four_point")  # life exponent 10/3 and 3 (seed 002)
+BEARING_TYPES = ("cross_roller", "four_point_contact", "four_point")  # exponent 10/3, 3, 3
 
 # Key columns of the shipped tables: an overlay row with the same key replaces the row.
 TABLE_KEYS: dict[str, tuple[str, ...]] = {
@@ -320,6 +320,11 @@ def _check_overlay_row(table: str, row: dict, where: str) -> None:
         if (isinstance(value, (int, float)) and value <= 0
                 and (_unit_of(column) in POSITIVE_UNITS or column in INTEGER_COLUMNS)):
             raise InputError(f"{where}.{column}", f"must be > 0 (got {value!r})")
+    if table == "main_bearing":
+        missing = [c for c in ("dp_m", "R_m", "C_N", "Co_N", "Mc_Nm") if row.get(c) is None]
+        if missing:
+            raise InputError(f"{where}.{missing[0]}", "required: the main-bearing check needs "
+                                                      "dp_m, R_m, C_N, Co_N and Mc_Nm")
     if table == "main_bearing" and row.get("bearing_type") not in BEARING_TYPES:
         raise InputError(f"{where}.bearing_type", f"must be one of {', '.join(BEARING_TYPES)} "
                                                   f"(got {str(row.get('bearing_type'))[:40]!r})")

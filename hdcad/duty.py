@@ -46,6 +46,13 @@ class ExternalLoad:
 
 
 @dataclass(frozen=True)
+class Oscillation:
+    """An output that swings back and forth (seed 000 p.033, figure 033-1)."""
+    angle_deg: float       # full oscillating angle (θ in 033-1 is half of it)
+    cycles_per_min: float  # n1, reciprocating oscillations per minute [cpm]
+
+
+@dataclass(frozen=True)
 class Duty:
     cycle: tuple[Segment, ...]
     max_output_speed_rpm: float
@@ -57,6 +64,7 @@ class Duty:
     ambient_C: float | None = None
     load_inertia_kgm2: float | None = None
     external_load: ExternalLoad | None = None
+    oscillation: Oscillation | None = None
     name: str = field(default="", compare=False)
 
     def as_dict(self) -> dict[str, Any]:
@@ -99,6 +107,8 @@ def parse_duty(raw: Any, name: str = "") -> Duty:
         ambient_C=d.ambient_C, load_inertia_kgm2=d.load_inertia_kgm2,
         external_load=None if load is None else ExternalLoad(
             load.radial_N, load.axial_N, load.Lr_m, load.La_m, load.fw),
+        oscillation=None if d.oscillation is None else Oscillation(
+            d.oscillation.angle_deg, d.oscillation.cycles_per_min),
         name=name,
     )
 

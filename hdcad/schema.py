@@ -68,6 +68,11 @@ class ExternalLoadIn(_Strict):
     fw: _num(1.0, 3.0, "") = 1.5  # seed 000 table 032-3: smooth 1-1.2 … shocks 1.5-3
 
 
+class OscillationIn(_Strict):
+    angle_deg: _num(0.0, 360.0, "deg", strict_low=True)
+    cycles_per_min: _num(0.0, 1e5, "cpm", strict_low=True)
+
+
 class DutyIn(_Strict):
     cycle: Annotated[list[SegmentIn], Field(min_length=1, max_length=10_000,
                                             description="a list of 1 to 10000 segments")]
@@ -81,6 +86,7 @@ class DutyIn(_Strict):
     ambient_C: _num(-60.0, 200.0, "°C") | None = None
     load_inertia_kgm2: _num(0.0, 1e6, "kg·m²", strict_low=True) | None = None
     external_load: ExternalLoadIn | None = None
+    oscillation: OscillationIn | None = None
 
 
 class DesignOptionsIn(_Strict):

@@ -81,11 +81,31 @@ def test_main_bearing_against_hand_calculation():
     result = main_bearing(cycle, load, bearing, 7000)
     assert result.details["Mmax_Nm"] == pytest.approx(m_max)
     assert result.details["Pc_N"] == pytest.approx(pc)
-    assert result.value == pytest.approx(l10)
+    assert result.details["criteria"]["life"]["value"] == pytest.approx(l10)
     assert result.details["fs"] == pytest.approx(60000 / po)
     assert result.status == ("pass" if l10 >= 7000 else "fail")
-    weak = dict(bearing, Mc_Nm=100)
-    assert main_bearing(cycle, load, weak, 1).status == "fail"  # Mmax 150 > Mc 100
+    weak = main_bearing(cycle, load, dict(bearing, Mc_Nm=100), 1)
+    # Mmax 150 > Mc 100: the row shows the moment, the criterion that fails
+    assert weak.status == "fail" and weak.details["governing"] == "moment"
+    assert (weak.value, weak.limit) == (pytest.approx(m_max), 100)
+
+
+def test_oscillating_life_formula_033_1():
+    """Seed 000 p.033, formula 033-1: Loc = 10⁶/(60·n1)·(90/θ)·(C/(fw·Pc))^(10/3), θ = angle/2;
+    made-up bearing data (test fixture), 20 oscillations per minute over 40°."""
+    from types import SimpleNamespace
+    cycle = [Segment("steady", 100, 1.0, 10)]
+    load = ExternalLoad(radial_N=2000, axial_N=500, Lr_m=0.05, La_m=0.02, fw=1.5)
+    bearing = {"dp_m": 0.1, "R_m": 0.02, "C_N": 40000, "Co_N": 60000, "Mc_Nm": 800,
+               "bearing_type": "cross_roller", "source": "test fixture"}
+    pc = 1.0 * (2000 + 2 * (2000 * 0.07 + 500 * 0.02) / 0.1) + 0.45 * 500
+    loc = 1e6 / (60 * 20) * (90 / 20) * (40000 / (1.5 * pc)) ** (10 / 3)
+    swing = main_bearing(cycle, load, bearing, 7000,
+                         oscillation=SimpleNamespace(angle_deg=40, cycles_per_min=20))
+    assert swing.details["criteria"]["life"]["value"] == pytest.approx(loc)
+    small = main_bearing(cycle, load, bearing, 7000,
+                         oscillation=SimpleNamespace(angle_deg=4, cycles_per_min=20))
+    assert "fretting" in small.note  # angle ≤ 5°: the seed's note under figure 033-1
 
 
 def test_main_bearing_needs_overlay_data(catalog):

@@ -52,7 +52,7 @@ from __future__ import annotations
 
 import math
 
-from .record import FAIL, NOT_EVALUATED, PASS, CheckResult, Quantity, compared, margin_of, \
+from .record import FAIL, NOT_EVALUATED, CheckResult, Quantity, criterion, governed, \
     not_evaluated
 
 FAMILY = "geometry"
@@ -98,15 +98,6 @@ def friction_torque_Nm(count: int, preload_N: float, mu_joint: float,
                        circle_diameter_mm: float) -> float:
     """T_cap [N·m] = n·F·µT·D/2: torque the clamped faces carry before slipping."""
     return count * preload_N * mu_joint * circle_diameter_mm / 2.0 / 1000.0
-
-
-def _criterion(value, limit, unit, sense, rule, status=None) -> dict:
-    if status is None:
-        ok = value <= limit if sense == "<=" else value >= limit
-        status = PASS if ok else FAIL
-    margin = margin_of(value, limit, sense) if status != NOT_EVALUATED and limit else None
-    return {"value": value, "limit": limit, "unit": unit, "sense": sense, "status": status,
-            "margin": margin, "rule": rule}
 
 
 def _class_row(catalog, bolt_class: str, d: float) -> dict | None:
@@ -212,15 +203,15 @@ def bolt_pattern(name: str, circle_diameter_mm: float, count: int, thread: str, 
                              else (D - float(annulus_inner_mm)) / 2.0),
                             ("edge_outer", outer)):
         if distance is None:
-            criteria[label] = _criterion(None, e_min, "mm", ">=", edge_rule + "; annulus "
+            criteria[label] = criterion(None, e_min, "mm", ">=", edge_rule + "; annulus "
                                          "diameter not given", NOT_EVALUATED)
         else:
-            criteria[label] = _criterion(distance, e_min, "mm", ">=", edge_rule)
+            criteria[label] = criterion(distance, e_min, "mm", ">=", edge_rule)
 
     # -- head room between neighbours ----------------------------------------------------
     if n >= 2:
         chord = D * math.sin(math.pi / n)
-        criteria["head_room"] = _criterion(chord, dk, "mm", ">=",
+        criteria["head_room"] = criterion(chord, dk, "mm", ">=",
                                            f"chord D·sin(π/n) ≥ dk = {dk:g} mm (ISO 4762 "
                                            "dk max, plain head)")
     # -- thread engagement ------------------------------------------------------------------
@@ -228,11 +219,11 @@ def bolt_pattern(name: str, circle_diameter_mm: float, count: int, thread: str, 
     m_min = k_m * d
     eng_rule = f"m ≥ {k_m:g}·d = {m_min:g} mm in {tapped_material} (design default)"
     if engagement_mm is None:
-        criteria["engagement"] = _criterion(None, m_min, "mm", ">=",
+        criteria["engagement"] = criterion(None, m_min, "mm", ">=",
                                             eng_rule + "; no tapped depth given",
                                             NOT_EVALUATED)
     else:
-        criteria["engagement"] = _criterion(float(engagement_mm), m_min, "mm", ">=", eng_rule)
+        criteria["engagement"] = criterion(float(engagement_mm), m_min, "mm", ">=", eng_rule)
 
     # -- preload (VDI 2230) -------------------------------------------------------------------
     Rp02 = float(prop["Rp02_MPa"])
@@ -248,15 +239,15 @@ def bolt_pattern(name: str, circle_diameter_mm: float, count: int, thread: str, 
         M_A = float(tightening)
         F_M = preload_from_torque_N(M_A, P, d2, D_Km, mu_thread, mu_head)
         torque_rule = "M_A given"
-        criteria["assembly_stress"] = _criterion(
+        criteria["assembly_stress"] = criterion(
             F_M, F_zul, "N", "<=", f"F_M ≤ F_M,zul ({UTILISATION:.0%} of Rp0.2 = {Rp02:g} MPa, "
                                    "VDI 2230 R7)")
     F_cap = F_M / float(tightening_factor)
     capacity = friction_torque_Nm(n, F_cap, float(friction), D)
-    criteria["torque_capacity"] = _criterion(capacity, required, "N·m", ">=",
+    criteria["torque_capacity"] = criterion(capacity, required, "N·m", ">=",
                                              "T_cap = n·(F_M/αA)·µT·D/2 ≥ S·T")
     details.update({
-        "criteria": criteria, "hole_diameter_mm": d_hole, "clearance_hole_medium_mm": d_medium,
+        "hole_diameter_mm": d_hole, "clearance_hole_medium_mm": d_medium,
         "dk_mm": dk, "dw_mm": dw, "pitch_mm": P, "d2_mm": d2, "d3_mm": d3, "As_mm2": As,
         "Rp02_MPa": Rp02, "mu_G": mu_thread, "mu_K": mu_head, "mu_T": float(friction),
         "D_Km_mm": D_Km, "torque_factor_mm": K, "F_Mzul_N": F_zul, "M_A_Nm": M_A,
@@ -280,23 +271,8 @@ def bolt_pattern(name: str, circle_diameter_mm: float, count: int, thread: str, 
     if tightening_factor == 1.0:
         notes.append("nominal preload: tightening scatter αA and embedding are left to the "
                      "safety factor")
-    governing = governing_criterion(criteria)
-    details["governing"] = governing
-    g = criteria[governing]
-    result = compared(ID, title, FAMILY, FORMULA, inputs, g["value"], g["limit"], g["unit"],
-                      g["sense"], SOURCE, f"governing: {governing}; " + "; ".join(notes),
-                      details)
-    if failed:
-        result.status = FAIL
-    return result
-
-
-def governing_criterion(criteria: dict[str, dict]) -> str:
-    """The criterion a one-line summary shows: a failing one, else the smallest margin."""
-    decided = {k: c for k, c in criteria.items() if c["margin"] is not None}
-    if not decided:
-        return "torque_capacity"
-    return min(decided, key=lambda k: (criteria[k]["status"] != FAIL, decided[k]["margin"]))
+    return governed(ID, title, FAMILY, FORMULA, inputs, criteria, "torque_capacity", SOURCE,
+                    "; ".join(notes), details)
 
 
 def square_edge_distance_mm(circle_diameter_mm: float, count: int, side_mm: float,

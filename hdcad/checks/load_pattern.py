@@ -36,11 +36,18 @@ def average_output_speed(cycle: Sequence[Segment]) -> float:
     return sum(s.speed_rpm * s.time_s for s in cycle) / sum(s.time_s for s in cycle)
 
 
+SHOCK_COUNT_CAP = 1.0e4  # the allowed number of shocks never exceeds 10⁴
+
+
 def allowed_shock_count(shock_speed_rpm: float, shock_time_s: float, ratio: float) -> float:
     """Allowed number of shocks Ns = 10⁴ / (2 · (ns·R/60) · ts) [-].
 
     The flexspline flexes twice per wave-generator revolution; the flexing count during
     shocks is limited to 1.0×10⁴. ns output speed [r/min], ts shock duration [s], R ratio.
-    Seed 000 p.013 (formula 013-1) and p.015 (example: Ns = 1190).
+    Capped at Ns ≤ 1.0×10⁴. Seed 000 p.013 (formula 013-1) and p.015 (example: Ns = 1190,
+    the cap); seed 003 p.049.
     """
-    return FLEXSPLINE_FLEX_LIMIT / (2.0 * shock_speed_rpm * ratio / 60.0 * shock_time_s)
+    flexings_per_shock = 2.0 * shock_speed_rpm * ratio / 60.0 * shock_time_s
+    # Ns ≤ 1.0×10⁴ (seed 000 p.015, seed 003 p.049): a very short or slow shock does not
+    # allow more than ten thousand shocks
+    return min(FLEXSPLINE_FLEX_LIMIT / flexings_per_shock, SHOCK_COUNT_CAP)

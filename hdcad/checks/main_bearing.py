@@ -9,6 +9,9 @@ Seed 000 pp.030-034 and seed 002 lines 202-254 (formulas lost in 000):
 - 031-4  Faav / (Frav + 2·(Frav·(Lr+R) + Faav·La)/dp) ≤ 1.5 → X = 1, Y = 0.45; else X = Y = 0.67
 - 032-1  L10 = 10⁶/(60·Nav)·(C/(fw·Pc))^(10/3) (cross-roller; exponent 3 for 4-point contact)
 - 032-2  Pc = X·(Frav + 2·(Frav·(Lr+R) + Faav·La)/dp) + Y·Faav
+- 033-1  Loc = 10⁶/(60·n1)·(90/θ)·(C/(fw·Pc))^(10/3) for an oscillating output (n1
+          oscillations per minute, θ = oscillating angle / 2 [deg]); at an oscillating angle
+          of 5° or less fretting may occur: consult the maker (note under figure 033-1)
 - 034-1/2  fs = Co/Po, Po = Frmax + 2·Mmax/dp + 0.44·Famax; fs ≥ 1.5 / 2 / 3 (table 034-3)
 """
 
@@ -18,7 +21,7 @@ from typing import Sequence
 
 from ..duty import ExternalLoad, Segment
 from .load_pattern import average_output_speed
-from .record import CheckResult, Quantity, compared, not_evaluated, FAIL
+from .record import CheckResult, Quantity, criterion, governed, not_evaluated
 
 FORMULA = ("Mmax = Frmax(Lr+R) + Famax·La ≤ Mc;  Pc = X(Frav + 2(Frav(Lr+R)+Faav·La)/dp) + "
            "Y·Faav;  L10 = 10⁶/(60·Nav)·(C/(fw·Pc))^(10/3);  fs = Co/Po ≥ fs,min")
@@ -29,8 +32,19 @@ ASSUMPTION_AVERAGE_LOAD = (
     "one external load for the whole cycle it equals that load")
 
 
+FRETTING_ANGLE_DEG = 5.0  # oscillating angle at or below which fretting may occur (033-1)
+
+
 def life_exponent(bearing_type: str) -> float:
-    return 3.0 if bearing_type == "four_point" else 10.0 / 3.0
+    """10/3 for a cross-roller bearing, 3 for a four-point contact ball bearing (032-1)."""
+    return 3.0 if bearing_type.startswith("four_point") else 10.0 / 3.0
+
+
+def oscillating_life_hours(c_N: float, pc_N: float, fw: float, cycles_per_min: float,
+                           angle_deg: float, exponent: float) -> float:
+    """Loc [h] = 10⁶/(60·n1)·(90/θ)·(C/(fw·Pc))^p, θ = angle/2 [deg]; formula 033-1."""
+    theta = angle_deg / 2.0
+    return 1e6 / (60.0 * cycles_per_min) * (90.0 / theta) * (c_N / (fw * pc_N)) ** exponent
 
 
 def max_moment(load: ExternalLoad, offset_R_m: float) -> float:
@@ -82,8 +96,13 @@ def required_static_safety(fw: float) -> float:
 
 
 def main_bearing(cycle: Sequence[Segment], load: ExternalLoad | None, bearing: dict | None,
-                 required_life_h: float, missing_reason: str = "") -> CheckResult:
-    """Full main-bearing procedure; value is the bearing L10 [h] against the required life."""
+                 required_life_h: float, missing_reason: str = "",
+                 oscillation=None) -> CheckResult:
+    """Full main-bearing procedure: moment, life (rotating 032-1 or oscillating 033-1) and
+    static safety; the row shows the governing criterion, all three are in the details.
+
+    ``oscillation``: an object with ``angle_deg`` (full oscillating angle) and
+    ``cycles_per_min`` when the output oscillates instead of turning."""
     title = "Main bearing (moment, life, static safety)"
     if load is None:
         return not_evaluated("main_bearing", title, "bearing", FORMULA,
@@ -100,26 +119,41 @@ def main_bearing(cycle: Sequence[Segment], load: ExternalLoad | None, bearing: d
     nav = average_output_speed(cycle)
     x, y = load_factors(fr_av, fa_av, load, offset, dp)
     pc = dynamic_equivalent_load(fr_av, fa_av, load, offset, dp)
-    life = bearing_life_hours(bearing["C_N"], pc, load.fw, nav, exponent) if pc > 0 else float("inf")
+    if pc <= 0:
+        life = float("inf")
+    elif oscillation is not None:
+        life = oscillating_life_hours(bearing["C_N"], pc, load.fw, oscillation.cycles_per_min,
+                                      oscillation.angle_deg, exponent)
+    else:
+        life = bearing_life_hours(bearing["C_N"], pc, load.fw, nav, exponent)
     po = static_equivalent_load(load, m_max, dp)
     fs = bearing["Co_N"] / po if po > 0 else float("inf")
     fs_min = required_static_safety(load.fw)
-    parts = {"moment": m_max <= bearing["Mc_Nm"], "static": fs >= fs_min}
+    life_rule = ("Loc, formula 033-1 (oscillating)" if oscillation is not None
+                 else "L10, formula 032-1")
+    criteria = {"life": criterion(life, required_life_h, "h", ">=", life_rule),
+                "moment": criterion(m_max, bearing["Mc_Nm"], "N·m", "<=",
+                                    "Mmax ≤ Mc, formula 030-1"),
+                "static_safety": criterion(fs, fs_min, "", ">=",
+                                           "fs = Co/Po ≥ fs,min, formulas 034-1/2")}
     inputs = {"Frmax": Quantity(load.radial_N, "N"), "Famax": Quantity(load.axial_N, "N"),
               "Lr": Quantity(load.Lr_m, "m"), "La": Quantity(load.La_m, "m"),
               "fw": Quantity(load.fw, ""), "dp": Quantity(dp, "m", bearing.get("source", "")),
               "R": Quantity(offset, "m"), "C": Quantity(bearing["C_N"], "N"),
               "Co": Quantity(bearing["Co_N"], "N"), "Mc": Quantity(bearing["Mc_Nm"], "N·m"),
               "Nav": Quantity(nav, "r/min")}
+    notes = [f"Mmax {m_max:.1f} N·m vs Mc {bearing['Mc_Nm']:g} N·m; fs {fs:.2f} vs "
+             f"{fs_min:g}"]
+    if oscillation is not None:
+        inputs["n1"] = Quantity(oscillation.cycles_per_min, "cpm")
+        inputs["oscillating angle"] = Quantity(oscillation.angle_deg, "deg")
+        if oscillation.angle_deg <= FRETTING_ANGLE_DEG:
+            notes.append(f"oscillating angle {oscillation.angle_deg:g}° ≤ "
+                         f"{FRETTING_ANGLE_DEG:g}°: an oil film hardly forms and fretting may "
+                         "occur; consult Harmonic Drive (seed 000 p.033)")
     details = {"Mmax_Nm": m_max, "Mc_Nm": bearing["Mc_Nm"], "Frav_N": fr_av, "Faav_N": fa_av,
                "X": x, "Y": y, "Pc_N": pc, "L10_h": life, "Po_N": po, "fs": fs,
                "fs_min": fs_min, "assumption": ASSUMPTION_AVERAGE_LOAD}
-    note = (f"Mmax {m_max:.1f} N·m vs Mc {bearing['Mc_Nm']:g} N·m "
-            f"({'ok' if parts['moment'] else 'exceeded'}); fs {fs:.2f} vs {fs_min:g} "
-            f"({'ok' if parts['static'] else 'too low'})")
-    result = compared("main_bearing", title, "bearing", FORMULA, inputs, life, required_life_h,
-                      "h", ">=", f"{SOURCE}; bearing data {bearing.get('source', '')}", note,
-                      details)
-    if not all(parts.values()):
-        result.status = FAIL
-    return result
+    return governed("main_bearing", title, "bearing", FORMULA, inputs, criteria, "life",
+                    f"{SOURCE}; bearing data {bearing.get('source', '')}", "; ".join(notes),
+                    details)

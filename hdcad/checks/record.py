@@ -88,3 +88,36 @@ def not_evaluated(id: str, title: str, family: str, formula: str, missing: str,
     text = f"not evaluated: {missing}" + (f". {note}" if note else "")
     return CheckResult(id, title, family, formula, inputs or {}, value, None, unit, "",
                        NOT_EVALUATED, source, text, None, details or {})
+
+
+def criterion(value, limit, unit: str, sense: str, rule: str, status: str | None = None) -> dict:
+    """One sub-criterion of a multi-criterion check (bolt circle, main bearing)."""
+    if status is None:
+        ok = value <= limit if sense == "<=" else value >= limit
+        status = PASS if ok else FAIL
+    margin = margin_of(value, limit, sense) if status != NOT_EVALUATED and limit else None
+    return {"value": value, "limit": limit, "unit": unit, "sense": sense, "status": status,
+            "margin": margin, "rule": rule}
+
+
+def governing_criterion(criteria: dict[str, dict], default: str) -> str:
+    """The criterion a one-line summary shows: a failing one, else the smallest margin."""
+    decided = {k: c for k, c in criteria.items() if c["margin"] is not None}
+    if not decided:
+        return default
+    return min(decided, key=lambda k: (criteria[k]["status"] != FAIL, decided[k]["margin"]))
+
+
+def governed(id: str, title: str, family: str, formula: str, inputs: dict, criteria: dict,
+             default: str, source: str, note: str, details: dict) -> CheckResult:
+    """A check whose row shows its governing criterion's value, limit, unit and sense; it
+    fails when any criterion fails. All criteria stay in ``details['criteria']``."""
+    key = governing_criterion(criteria, default)
+    g = criteria[key]
+    details = dict(details, criteria=criteria, governing=key)
+    result = compared(id, title, family, formula, inputs, g["value"], g["limit"], g["unit"],
+                      g["sense"], source, f"governing: {key}; {note}" if note else
+                      f"governing: {key}", details)
+    if any(c["status"] == FAIL for c in criteria.values()):
+        result.status = FAIL
+    return result

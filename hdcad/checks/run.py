@@ -92,9 +92,18 @@ def stiffness_curve(model: GearModel) -> tuple[StiffnessCurve | None, str]:
     return StiffnessCurve(K1=float(k1), **values), k1.source
 
 
+def loaded_input_speed_rpm(duty: Duty, ratio: float) -> float:
+    """Time-weighted input speed [r/min] of the moving segments only: the FD rating applies
+    at the speed the gear turns under load, not at an average diluted by rest time."""
+    moving = [s for s in duty.cycle if s.speed_rpm > 0]
+    return ratio * sum(s.speed_rpm * s.time_s for s in moving) / sum(s.time_s for s in moving)
+
+
 def _fd_limits(model: GearModel, duty: Duty, derived: dict) -> dict:
-    avg_rating, avg_rule = fd_rules.rating_at_speed(model.fd_torque_by_speed,
-                                                    derived["avg_input_speed_rpm"])
+    speed = loaded_input_speed_rpm(duty, model.ratio)
+    avg_rating, avg_rule = fd_rules.rating_at_speed(model.fd_torque_by_speed, speed)
+    avg_rule = (f"rated at {speed:.0f} r/min, the input speed of the moving segments "
+                f"(rest time excluded); {avg_rule}")
     speed_key = f"max_input_speed_{duty.lubrication}_rpm"
     return {
         "avg_torque": (avg_rating, avg_rule),
@@ -170,7 +179,7 @@ def run_checks(model: GearModel, duty: Duty, catalog: Catalog,
                     catalog.rows("grease_suitability"), catalog.rows("lubricant_temperature"),
                     float(oil_level) if oil_level else None),
         main_bearing(duty.cycle, duty.external_load, bearing, duty.required_life_h,
-                     bearing_missing),
+                     bearing_missing, duty.oscillation),
     ]
     assumptions = [text for _, text in catalog.interpretations()]
     return Evaluation(model, duty, derived, checks, catalog.revision, assumptions)

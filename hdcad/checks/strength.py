@@ -11,8 +11,8 @@ from ..duty import Shock
 from .load_pattern import allowed_shock_count
 from .record import CheckResult, Quantity, compared, not_evaluated
 
-SOURCE = "seed 000 p.013 (formula 013-1)"
-FORMULA = "Ns = 10⁴ / (2 · (ns·R/60) · ts);  shocks expected ≤ Ns"
+SOURCE = "seed 000 p.013 (formula 013-1), p.015 (Ns ≤ 1.0×10⁴); seed 003 p.049"
+FORMULA = "Ns = min(10⁴ / (2 · (ns·R/60) · ts), 1.0×10⁴);  shocks expected ≤ Ns"
 
 
 def shock_count(shock: Shock | None, ratio: float) -> CheckResult:

@@ -1,0 +1,61 @@
+"""Catalog rules that a duty must meet as a whole: the peak torque of every segment, the cap
+on the allowed number of shocks, the FD rating at the speed under load."""
+
+from __future__ import annotations
+
+import pytest
+
+from hdcad.checks.run import run_checks
+from hdcad.duty import parse_duty
+from hdcad.models import resolve
+
+
+def _duty(cycle, **extra):
+    raw = {"cycle": cycle, "max_output_speed_rpm": 40, "max_input_speed_rpm": 3200,
+           "required_life_h": 7000, "lubrication": "grease", **extra}
+    return parse_duty(raw)
+
+
+def _check(catalog, code, duty, check_id):
+    return next(c for c in run_checks(resolve(code, catalog), duty, catalog).checks
+                if c.id == check_id)
+
+
+def test_a_steady_overload_fails_the_peak_torque(catalog):
+    # seed 003 table 058-1, CSF-45-120-GH: repeated peak torque 823 N·m; a steady segment
+    # at 1000 N·m is within the 1760 N·m momentary limit but not a normal operating torque
+    duty = _duty([{"phase": "start", "torque_Nm": 400, "time_s": 0.3, "speed_rpm": 7},
+                  {"phase": "steady", "torque_Nm": 1000, "time_s": 3, "speed_rpm": 14},
+                  {"phase": "stop", "torque_Nm": 200, "time_s": 0.4, "speed_rpm": 7}])
+    peak = _check(catalog, "CSF-45-120-GH", duty, "peak_torque")
+    assert peak.status == "fail" and peak.value == 1000 and peak.limit == 823
+    assert peak.details["phase"] == "steady" and "segment 2" in peak.note
+
+
+def test_the_allowed_number_of_shocks_is_capped_at_ten_thousand(catalog):
+    # seed 000 p.015 / seed 003 p.049: Ns = 10⁴/(2·(ns·R/60)·ts) ≤ 1.0×10⁴; a shock at
+    # 1 r/min for 0.01 s on R = 120 gives 10⁴/(2·2·0.01) = 250,000 before the cap
+    cycle = [{"phase": "steady", "torque_Nm": 300, "time_s": 3, "speed_rpm": 14}]
+    shock = {"torque_Nm": 500, "time_s": 0.01, "speed_rpm": 1, "count": 20000}
+    result = _check(catalog, "CSF-45-120-GH", _duty(cycle, shock=shock), "shock_count")
+    assert result.value == 1.0e4 and result.status == "fail"
+
+
+def test_fd_torque_is_rated_at_the_speed_under_load(catalog):
+    # FD-25-80 at 37.5 r/min output = 3000 r/min input while it turns, resting 2/3 of the time:
+    # the time average (1000 r/min) would take the 57 N·m row; under load the next higher
+    # listed speed is 3500 r/min → 46 N·m (seed 001 table 310-1)
+    duty = _duty([{"phase": "steady", "torque_Nm": 20, "time_s": 1, "speed_rpm": 37.5},
+                  {"phase": "rest", "torque_Nm": 0, "time_s": 2, "speed_rpm": 0}],
+                 lubrication="oil")
+    avg = _check(catalog, "FD-25-80-2", duty, "avg_torque")
+    assert avg.limit == 46 and "3500 r/min row" in avg.note
+
+
+def test_fd_momentary_torque_is_twice_the_1450_rating(catalog):
+    # seed 001 table 310-1, note 3: momentary 200 % of the 1450 r/min value: 2 × 57 = 114 N·m
+    cycle = [{"phase": "steady", "torque_Nm": 20, "time_s": 1, "speed_rpm": 10}]
+    shock = {"torque_Nm": 100, "time_s": 0.1, "speed_rpm": 10, "count": 10}
+    result = _check(catalog, "FD-25-80-0", _duty(cycle, shock=shock, lubrication="oil"),
+                    "momentary_torque")
+    assert result.limit == pytest.approx(114) and result.status == "pass"
