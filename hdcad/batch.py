@@ -49,7 +49,7 @@ def packet_summary(result) -> dict:
             "description": ev.model.description, "verdict": ev.verdict,
             "all_passed": ev.all_passed,
             "counts": {s: sum(c.status == s for c in ev.checks)
-                       for s in ("pass", "fail", "not_evaluated")},
+                       for s in ("pass", "warn", "fail", "not_evaluated")},
             "governing": None if governing is None else
             {"id": governing.id, "name": governing.details.get("name", ""),
              "margin": governing.margin, "status": governing.status},

@@ -169,7 +169,8 @@ def run_design(model: GearModel, duty: Duty, options: DesignOptions, catalog: Ca
         masses = {p.name: part_mass_kg(p, options.density_kg_m3) for p in parts}
         evaluation.checks += geometric_checks(model, parts, options, catalog)
         evaluation.checks.append(inner_wall_clearance(model, parts, catalog, options))
-        evaluation.checks.append(oil_level_check(model, parts, duty, options, catalog))
+        evaluation.checks.append(oil_level_check(model, parts, evaluation.duty, options,
+                                                 catalog))
         evaluation.checks.append(interference_check(interference_mm3(parts), masses))
         clock.lap("geometric checks")
         result = evaluation.as_dict()

@@ -66,6 +66,7 @@ class Duty:
     external_load: ExternalLoad | None = None
     oscillation: Oscillation | None = None
     name: str = field(default="", compare=False)
+    lubrication_given: bool = field(default=True, compare=False)  # False: the file names none
 
     def as_dict(self) -> dict[str, Any]:
         out = asdict(self)
@@ -109,7 +110,7 @@ def parse_duty(raw: Any, name: str = "") -> Duty:
             load.radial_N, load.axial_N, load.Lr_m, load.La_m, load.fw),
         oscillation=None if d.oscillation is None else Oscillation(
             d.oscillation.angle_deg, d.oscillation.cycles_per_min),
-        name=name,
+        name=name, lubrication_given="lubrication" in d.model_fields_set,
     )
 
 

@@ -23,13 +23,16 @@ HEAVY = {"cycle": [{"phase": "start", "torque_Nm": 900, "time_s": 0.3, "speed_rp
                    {"phase": "stop", "torque_Nm": 900, "time_s": 0.4, "speed_rpm": 7}],
          "max_output_speed_rpm": 14, "max_input_speed_rpm": 1800, "required_life_h": 7000,
          "lubrication": "grease"}
+FAST = dict(HEAVY, cycle=[{"phase": "steady", "torque_Nm": 10, "time_s": 3, "speed_rpm": 30},
+                          {"phase": "rest", "torque_Nm": 0, "time_s": 3, "speed_rpm": 0}],
+            max_output_speed_rpm=31, max_input_speed_rpm=3800)
 LIGHT = dict(HEAVY, cycle=[dict(s, torque_Nm=s["torque_Nm"] / 100) for s in HEAVY["cycle"]])
 
 
-@pytest.mark.parametrize("raw", [HEAVY, LIGHT], ids=["heavy", "light"])
+@pytest.mark.parametrize("raw", [HEAVY, LIGHT, FAST], ids=["heavy", "light", "fast"])
 def test_printed_relation_holds_for_every_check_of_every_model(catalog, raw):
     duty = parse_duty(raw, "duty")
-    wrong, counted = [], {"pass": 0, "fail": 0}
+    wrong, counted = [], {"pass": 0, "fail": 0, "warn": 0}
     for code in list_models(catalog):
         for c in run_checks(resolve(code, catalog), duty, catalog).checks:
             op = relation_text(c.sense, c.status)
@@ -38,7 +41,8 @@ def test_printed_relation_holds_for_every_check_of_every_model(catalog, raw):
             counted[c.status] += 1
             if not OPS[op](c.value, c.limit):
                 wrong.append(f"{code} {c.id}: {c.value:g} {op} {c.limit:g} ({c.status})")
-    assert counted["pass"] > 100 and (raw is LIGHT or counted["fail"] > 50)
+    assert counted["pass"] > 100 and (raw is not HEAVY or counted["fail"] > 50)
+    assert raw is not FAST or counted["warn"] > 0  # gear heads above the 3000 r/min guide
     assert not wrong, "\n".join(wrong[:20])
 
 

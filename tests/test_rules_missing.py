@@ -12,7 +12,8 @@ from hdcad.models import resolve
 
 def _duty(cycle, **extra):
     raw = {"cycle": cycle, "max_output_speed_rpm": 40, "max_input_speed_rpm": 3200,
-           "required_life_h": 7000, "lubrication": "grease", **extra}
+           "required_life_h": 7000, "lubrication": "grease"}
+    raw.update(extra)
     return parse_duty(raw)
 
 
@@ -59,3 +60,33 @@ def test_fd_momentary_torque_is_twice_the_1450_rating(catalog):
     result = _check(catalog, "FD-25-80-0", _duty(cycle, shock=shock, lubrication="oil"),
                     "momentary_torque")
     assert result.limit == pytest.approx(114) and result.status == "pass"
+
+
+def test_gear_head_continuous_input_above_3000_is_a_warning(catalog):
+    # seed 003 tables 050-1/058-1 note 6: for continuous running 3000 r/min is the guide;
+    # CSF-45-120-GH steady at 30 r/min output = 3600 r/min input (within the 3800 maximum)
+    # (rest halves the average input speed to 1800 r/min, below the 3000 r/min allowed)
+    duty = _duty([{"phase": "steady", "torque_Nm": 300, "time_s": 3, "speed_rpm": 30},
+                  {"phase": "rest", "torque_Nm": 0, "time_s": 3, "speed_rpm": 0}],
+                 max_output_speed_rpm=31, max_input_speed_rpm=3800)
+    ev = run_checks(resolve("CSF-45-120-GH", catalog), duty, catalog)
+    check = ev.check("continuous_input_speed")
+    assert check.status == "warn" and check.value == 3600 and check.limit == 3000
+    assert ev.all_passed and "to confirm" in ev.verdict
+
+
+def test_fd_without_a_named_lubricant_runs_in_oil(catalog):
+    # seed 001 p.315: grease only for ED ≤ 10 % and ≤ 10 min continuous; oil otherwise
+    raw = {"cycle": [{"phase": "steady", "torque_Nm": 20, "time_s": 1, "speed_rpm": 10}],
+           "max_output_speed_rpm": 40, "max_input_speed_rpm": 3200, "required_life_h": 7000}
+    ev = run_checks(resolve("FD-25-80-2", catalog), parse_duty(raw), catalog)
+    assert ev.duty.lubrication == "oil" and "runs in oil" not in ev.check("lubrication").note
+    assert "FD units run in oil" in ev.check("lubrication").note
+
+
+def test_fd_with_another_grease_is_to_confirm_not_forbidden(catalog):
+    duty = _duty([{"phase": "steady", "torque_Nm": 20, "time_s": 1, "speed_rpm": 10},
+                  {"phase": "rest", "torque_Nm": 0, "time_s": 99, "speed_rpm": 0}],
+                 grease="SK-2")
+    lub = _check(catalog, "FD-25-80-2", duty, "lubrication")
+    assert lub.status == "warn" and "consulting" in lub.note

@@ -15,7 +15,7 @@ from dataclasses import dataclass
 from typing import Sequence
 
 from ..duty import Duty, Segment
-from .record import CheckResult, Quantity, FAIL, NOT_EVALUATED, PASS
+from .record import CheckResult, Quantity, FAIL, NOT_EVALUATED, PASS, WARN
 
 FD_GREASE_MAX_ED_PCT = 10.0  # seed 001 p.315
 FD_GREASE_MAX_CONTINUOUS_S = 600.0  # seed 001 p.315: 10 min
@@ -81,8 +81,10 @@ def _fd_criteria(duty: Duty, oil_level_mm: float | None) -> tuple[list[Criterion
     ed = duty_ratio_pct(duty.cycle)
     run = longest_continuous_run_s(duty.cycle)
     out = [
-        Criterion("grease", PASS if duty.grease == FD_RECOMMENDED_GREASE else FAIL,
-                  f"grease {duty.grease}; the FD series recommends {FD_RECOMMENDED_GREASE}"),
+        Criterion("grease", PASS if duty.grease == FD_RECOMMENDED_GREASE else WARN,
+                  f"grease {duty.grease}; the FD series recommends {FD_RECOMMENDED_GREASE}"
+                  + ("" if duty.grease == FD_RECOMMENDED_GREASE else
+                     ": another grease only after consulting Harmonic Drive (seed 001 p.315)")),
         Criterion("ED", PASS if ed <= FD_GREASE_MAX_ED_PCT else FAIL,
                   f"ED {ed:.1f} % (grease allowed up to {FD_GREASE_MAX_ED_PCT:g} %)"),
         Criterion("continuous run", PASS if run <= FD_GREASE_MAX_CONTINUOUS_S else FAIL,
@@ -96,8 +98,9 @@ def _cup_criteria(family: str, size: int, ratio: int, duty: Duty,
                   suitability: list[dict]) -> list[Criterion]:
     if duty.lubrication == "oil":
         if family == "GH":
-            return [Criterion("lubricant", FAIL, "gear heads ship grease-filled; oil lubrication "
-                                                 "is not offered (seed 000 p.016)")]
+            return [Criterion("lubricant", WARN, "gear heads ship grease-filled; oil "
+                                                 "lubrication only after consulting Harmonic "
+                                                 "Drive (seed 000 p.016)")]
         return [Criterion("lubricant", PASS, f"oil {OIL_NAME}; oil level for component types is "
                                              "not in the seeds (add the series' design-guide "
                                              "value through an overlay)")]
@@ -126,7 +129,11 @@ def lubrication(family: str, size: int, ratio: int, duty: Duty, suitability: lis
     lubricant = duty.grease if duty.lubrication == "grease" else OIL_NAME
     criteria.append(_temperature(lubricant, duty.ambient_C, temperatures))
     statuses = {c.status for c in criteria}
-    status = FAIL if FAIL in statuses else NOT_EVALUATED if NOT_EVALUATED in statuses else PASS
+    status = next(s for s in (FAIL, WARN, NOT_EVALUATED, PASS) if s in statuses or s == PASS)
+    ed = next((c for c in criteria if c.name == "ED"), None)
+    if ed is not None and ed.status != status:
+        value = limit = None  # the row's numbers are ED's: shown only when ED decides it
+        unit = sense = ""
     note = "; ".join(c.text for c in criteria)
     if duty.lubrication == "oil":
         note += "; change oil after 100 h, then every 1000 h or 6 months (seed 000 p.018)"

@@ -6,7 +6,7 @@ calls the pure check functions; it computes no physics of its own.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 from ..catalog import Catalog, Datum
 from ..duty import Duty
@@ -16,8 +16,8 @@ from .life import wg_life
 from .load_pattern import average_output_speed, average_torque
 from .lubrication import lubrication
 from .main_bearing import main_bearing
-from .record import CheckResult, FAIL, NOT_EVALUATED
-from .speed import avg_input_speed, max_input_speed, ratio_limit
+from .record import CheckResult, FAIL, NOT_EVALUATED, WARN
+from .speed import continuous_input_speed, avg_input_speed, max_input_speed, ratio_limit
 from .stiffness import StiffnessCurve, torsional_resonance
 from .strength import shock_count
 from .thrust import thrust_angle, thrust_force
@@ -40,6 +40,10 @@ class Evaluation:
         return [c for c in self.checks if c.status == FAIL]
 
     @property
+    def warnings(self) -> list[CheckResult]:
+        return [c for c in self.checks if c.status == WARN]
+
+    @property
     def not_evaluated(self) -> list[CheckResult]:
         return [c for c in self.checks if c.status == NOT_EVALUATED]
 
@@ -52,9 +56,9 @@ class Evaluation:
     def verdict(self) -> str:
         if self.failures:
             return f"{len(self.failures)} check(s) fail"
-        if self.not_evaluated:
-            return f"all evaluated checks pass; {len(self.not_evaluated)} not evaluated"
-        return "all checks pass"
+        parts = ([f"{len(self.warnings)} to confirm with the maker"] if self.warnings else []) \
+            + ([f"{len(self.not_evaluated)} not evaluated"] if self.not_evaluated else [])
+        return "all evaluated checks pass; " + "; ".join(parts) if parts else "all checks pass"
 
     def check(self, check_id: str) -> CheckResult:
         return next(c for c in self.checks if c.id == check_id)
@@ -153,9 +157,22 @@ def _main_bearing_data(model: GearModel, catalog: Catalog) -> tuple[dict | None,
                   "catalog; supply them in an overlay table main_bearing")
 
 
+FD_DEFAULT_LUBRICATION = ("oil: the duty names no lubricant and FD units run in oil (seed 001 "
+                          "p.315: grease only for ED ≤ 10 % and ≤ 10 min continuous running)")
+
+
+def duty_for_model(model: GearModel, duty: Duty) -> Duty:
+    """The duty as evaluated: an FD whose duty names no lubricant is oil-lubricated."""
+    if model.is_fd and not duty.lubrication_given:
+        return replace(duty, lubrication="oil", lubrication_given=True)
+    return duty
+
+
 def run_checks(model: GearModel, duty: Duty, catalog: Catalog,
                thrust_capacity_N: float | None = None) -> Evaluation:
     """Every selection check of the catalog for ``model`` under ``duty``."""
+    defaulted = model.is_fd and not duty.lubrication_given
+    duty = duty_for_model(model, duty)
     derived = derived_values(duty, model.ratio)
     limits = _fd_limits(model, duty, derived) if model.is_fd else _cup_limits(model)
     curve, curve_source = stiffness_curve(model)
@@ -181,5 +198,10 @@ def run_checks(model: GearModel, duty: Duty, catalog: Catalog,
         main_bearing(duty.cycle, duty.external_load, bearing, duty.required_life_h,
                      bearing_missing, duty.oscillation),
     ]
+    if model.family == "GH":
+        checks.insert(4, continuous_input_speed(duty.cycle, model.ratio))
+    if defaulted:
+        lub = next(c for c in checks if c.id == "lubrication")
+        lub.note = f"{FD_DEFAULT_LUBRICATION}; {lub.note}"
     assumptions = [text for _, text in catalog.interpretations()]
     return Evaluation(model, duty, derived, checks, catalog.revision, assumptions)

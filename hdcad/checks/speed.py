@@ -48,3 +48,30 @@ def max_input_speed(ni_max_rpm: float, limit: Datum | None, rule: str = "") -> C
     inputs["ni_max,allowed"] = quantity(limit)
     return compared("max_input_speed", title, FAMILY, formula, inputs, ni_max_rpm, float(limit),
                     "r/min", "<=", limit.source, rule)
+
+
+# seed 003, note 6 of tables 050-1/058-1: the allowed maximum input speed is for
+# non-continuous running; for continuous running take 3000 r/min or less as the guide
+GH_CONTINUOUS_GUIDE_RPM = 3000.0
+GH_CONTINUOUS_SOURCE = "seed 003 tables 050-1/058-1, note 6 (p.050/058)"
+
+
+def continuous_input_speed(cycle, ratio: float) -> CheckResult:
+    """Gear heads: input speed of the steady segments [r/min] against the 3000 r/min guide
+    for continuous running. Beyond it the check warns (a guide, not a rating)."""
+    from .record import PASS, WARN
+    steady = [s for s in cycle if s.phase == "steady"] or list(cycle)
+    speed = max(s.speed_rpm for s in steady) * ratio
+    inputs = {"n steady (output)": Quantity(max(s.speed_rpm for s in steady), "r/min"),
+              "R": Quantity(ratio, ""),
+              "guide": Quantity(GH_CONTINUOUS_GUIDE_RPM, "r/min", GH_CONTINUOUS_SOURCE)}
+    result = compared("continuous_input_speed", "Continuous input speed (gear head)", FAMILY,
+                      "ni,steady = n_steady·R ≤ 3000 r/min (guide for continuous running)",
+                      inputs, speed, GH_CONTINUOUS_GUIDE_RPM, "r/min", "<=",
+                      GH_CONTINUOUS_SOURCE)
+    if result.status != PASS:
+        result.status = WARN
+        result.note = ("above the catalog's guide for continuous running (the allowed "
+                       "maximum input speed is for non-continuous running): confirm with "
+                       "Harmonic Drive")
+    return result

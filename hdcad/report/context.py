@@ -42,7 +42,7 @@ def sheet_context(result: dict, catalog: Catalog, figures: list[Figure],
                   drawings: list[Figure], bom: list[BomRow], description: str,
                   today: date | None = None) -> dict:
     checks = result["checks"]
-    counts = {s: sum(c["status"] == s for c in checks) for s in ("pass", "fail", "not_evaluated")}
+    counts = {s: sum(c["status"] == s for c in checks) for s in ("pass", "warn", "fail", "not_evaluated")}
     return {
         "model": result["model"], "description": description,
         "verdict": result["verdict"], "counts": counts, "all_passed": result["all_passed"],
@@ -59,6 +59,8 @@ def sheet_context(result: dict, catalog: Catalog, figures: list[Figure],
         "failures": [check_label(c["id"], c["details"]) for c in checks if c["status"] == "fail"],
         "not_evaluated": [{"label": check_label(c["id"], c["details"]), "reason": _reason(c)}
                           for c in checks if c["status"] == "not_evaluated"],
+        "warnings": [{"label": check_label(c["id"], c["details"]), "reason": c["note"]}
+                     for c in checks if c["status"] == "warn"],
     }
 
 

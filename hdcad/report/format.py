@@ -54,7 +54,8 @@ def relation_text(sense: str | None, status: str) -> str:
     """
     if not sense:
         return ""
-    return FAILED_SENSE.get(sense, sense) if status == "fail" else sense_text(sense)
+    # a warning with numbers is a value beyond a guide: the printed relation is the broken one
+    return FAILED_SENSE.get(sense, sense) if status in ("fail", "warn") else sense_text(sense)
 
 
 # unit spellings of catalog column names (``speed_rpm`` → rpm) as printed: one spelling each
