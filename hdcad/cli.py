@@ -82,10 +82,12 @@ def cmd_check(args) -> int:
     from .duty import load_duty
     from .models import resolve
     from .output import json_text, write_text_atomic
+    from .design_options import load_options
     catalog = load_catalog(args.catalog_overlay)
     model = resolve(args.model, catalog)
     duty = load_duty(args.duty)
-    ev = run_checks(model, duty, catalog)
+    options = load_options(args.design)
+    ev = run_checks(model, duty, catalog, options.input_thrust_capacity_N, options.check_rules)
     print_evaluation(ev)
     if args.json:
         write_text_atomic(args.json, json_text(ev.as_dict()))
@@ -267,6 +269,9 @@ def _parser() -> argparse.ArgumentParser:
     p = command("check", cmd_check, "Run every selection check for one model and duty.")
     p.add_argument("model", help="model code, e.g. FD-25-80-2, CSF-45-120-GH, CSF-40-120-2A-GR")
     duty(p)
+    p.add_argument("--design", metavar="FILE", help="design options YAML: its rules: block "
+                                                    "changes hdcad's own rules (resonance "
+                                                    "band, static safety, …)")
     p.add_argument("--json", metavar="FILE", help="also write the results as JSON")
     p = command("select", cmd_select, "Every catalog model that passes the duty, smallest first.")
     duty(p)

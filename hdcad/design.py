@@ -153,7 +153,8 @@ def run_design(model: GearModel, duty: Duty, options: DesignOptions, catalog: Ca
     from .output import check_target
     check_target(Path(out_dir) / model.code, force)
     clock = _Clock(progress)
-    evaluation = run_checks(model, duty, catalog, options.input_thrust_capacity_N)
+    evaluation = run_checks(model, duty, catalog, options.input_thrust_capacity_N,
+                            options.check_rules)
     clock.lap("checks")
     target = Path(out_dir) / model.code
     # the side process stops before the staging folder is removed on an error or Ctrl-C

@@ -33,7 +33,13 @@ class DesignOptions:
     running_gap_mm: float = 1.0          # axial gap between the two rotating FD casing halves
     input_thrust_capacity_N: float | None = None  # axial capacity of the user's input support
     extra: dict = field(default_factory=dict)
+    rules: dict = field(default_factory=dict)  # hdcad's own rules changed (checks/rules.py)
     given: tuple[str, ...] = ()  # the options the design file set (the rest are defaults)
+
+    @property
+    def check_rules(self):
+        from .checks.rules import Rules
+        return Rules(**self.rules)
 
     @property
     def density_kg_m3(self) -> float:
@@ -50,6 +56,9 @@ def parse_options(raw: Any) -> DesignOptions:
         return DesignOptions()
     checked = validated(DesignOptionsIn, raw, "")
     values = {k: getattr(checked, k) for k in checked.model_fields_set}
+    if values.get("rules") is not None:
+        values["rules"] = {k: getattr(values["rules"], k)
+                           for k in values["rules"].model_fields_set}
     if values.get("motor_flange") is not None:
         values["motor_flange"] = values["motor_flange"].strip().upper()
     return DesignOptions(**values, given=tuple(sorted(values)))

@@ -89,6 +89,12 @@ class DutyIn(_Strict):
     oscillation: OscillationIn | None = None
 
 
+class RulesIn(_Strict):
+    resonance_band: _num(0.01, 1.0, "") = 0.20
+    static_safety_min: _num(1.0, 10.0, "") | None = None
+    adjustment_efficiency: _num(0.05, 1.0, "") = 0.6
+
+
 class DesignOptionsIn(_Strict):
     motor_flange: Annotated[str, Field(min_length=1, max_length=8, strict=True,
                                        description="a flange code such as KG")] | None = None
@@ -101,6 +107,7 @@ class DesignOptionsIn(_Strict):
     bolt_safety_factor: _num(1.0, 5.0, "") = 1.5
     running_gap_mm: _num(0.2, 5.0, "mm") = 1.0
     input_thrust_capacity_N: _num(0.0, 1e7, "N") | None = None
+    rules: RulesIn | None = None
 
 
 def validated(model: type[T], raw: Any, root: str = "") -> T:

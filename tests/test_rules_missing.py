@@ -90,3 +90,22 @@ def test_fd_with_another_grease_is_to_confirm_not_forbidden(catalog):
                  grease="SK-2")
     lub = _check(catalog, "FD-25-80-2", duty, "lubrication")
     assert lub.status == "warn" and "consulting" in lub.note
+
+
+def test_hdcads_own_rules_are_labelled_and_can_be_changed(catalog):
+    from hdcad.checks.rules import Rules
+    from hdcad.design_options import parse_options
+    from hdcad.duty import load_duty
+    from hdcad.report.context import option_rows
+    from hdcad.resources import examples_dir
+    duty = load_duty(examples_dir() / "duty_seed_example.yaml")
+    model = resolve("CSF-45-120-GH", catalog)
+    default = run_checks(model, duty, catalog).check("torsional_resonance")
+    assert default.limit == 0.2 and "hdcad's own rule rules.resonance_band" in default.note
+    options = parse_options({"rules": {"resonance_band": 0.6}})
+    strict = run_checks(model, duty, catalog, rules=options.check_rules)
+    # the seed example sits 56.7 % below resonance: inside a ±60 % band it fails
+    assert strict.check("torsional_resonance").status == "fail"
+    rows = {r["key"]: r for r in option_rows(options.as_dict())}
+    assert rows["rules.resonance_band"]["value"] == "0.6" and not rows["rules.resonance_band"]["default"]
+    assert rows["rules.adjustment_efficiency"]["default"] and Rules().adjustment_efficiency == 0.6

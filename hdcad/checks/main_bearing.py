@@ -22,6 +22,7 @@ from typing import Sequence
 from ..duty import ExternalLoad, Segment
 from .load_pattern import average_output_speed
 from .record import CheckResult, Quantity, criterion, governed, not_evaluated
+from .rules import label
 
 FORMULA = ("Mmax = Frmax(Lr+R) + Famax·La ≤ Mc;  Pc = X(Frav + 2(Frav(Lr+R)+Faav·La)/dp) + "
            "Y·Faav;  L10 = 10⁶/(60·Nav)·(C/(fw·Pc))^(10/3);  fs = Co/Po ≥ fs,min")
@@ -97,7 +98,7 @@ def required_static_safety(fw: float) -> float:
 
 def main_bearing(cycle: Sequence[Segment], load: ExternalLoad | None, bearing: dict | None,
                  required_life_h: float, missing_reason: str = "",
-                 oscillation=None) -> CheckResult:
+                 oscillation=None, static_safety_min: float | None = None) -> CheckResult:
     """Full main-bearing procedure: moment, life (rotating 032-1 or oscillating 033-1) and
     static safety; the row shows the governing criterion, all three are in the details.
 
@@ -128,14 +129,17 @@ def main_bearing(cycle: Sequence[Segment], load: ExternalLoad | None, bearing: d
         life = bearing_life_hours(bearing["C_N"], pc, load.fw, nav, exponent)
     po = static_equivalent_load(load, m_max, dp)
     fs = bearing["Co_N"] / po if po > 0 else float("inf")
-    fs_min = required_static_safety(load.fw)
+    fs_min = static_safety_min or required_static_safety(load.fw)
+    fs_rule = (label("static_safety_min", fs_min) if static_safety_min else
+               "fs,min from the duty's fw (fw > 1.5 → 2, else 1.5): table 034-3 lists "
+               "operating conditions, not fw; " + label("static_safety_min", "None"))
     life_rule = ("Loc, formula 033-1 (oscillating)" if oscillation is not None
                  else "L10, formula 032-1")
     criteria = {"life": criterion(life, required_life_h, "h", ">=", life_rule),
                 "moment": criterion(m_max, bearing["Mc_Nm"], "N·m", "<=",
                                     "Mmax ≤ Mc, formula 030-1"),
                 "static_safety": criterion(fs, fs_min, "", ">=",
-                                           "fs = Co/Po ≥ fs,min, formulas 034-1/2")}
+                                           f"fs = Co/Po ≥ fs,min, formulas 034-1/2; {fs_rule}")}
     inputs = {"Frmax": Quantity(load.radial_N, "N"), "Famax": Quantity(load.axial_N, "N"),
               "Lr": Quantity(load.Lr_m, "m"), "La": Quantity(load.La_m, "m"),
               "fw": Quantity(load.fw, ""), "dp": Quantity(dp, "m", bearing.get("source", "")),

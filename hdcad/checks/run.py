@@ -17,6 +17,7 @@ from .load_pattern import average_output_speed, average_torque
 from .lubrication import lubrication
 from .main_bearing import main_bearing
 from .record import CheckResult, FAIL, NOT_EVALUATED, WARN
+from .rules import Rules
 from .speed import continuous_input_speed, avg_input_speed, max_input_speed, ratio_limit
 from .stiffness import StiffnessCurve, torsional_resonance
 from .strength import shock_count
@@ -169,8 +170,11 @@ def duty_for_model(model: GearModel, duty: Duty) -> Duty:
 
 
 def run_checks(model: GearModel, duty: Duty, catalog: Catalog,
-               thrust_capacity_N: float | None = None) -> Evaluation:
-    """Every selection check of the catalog for ``model`` under ``duty``."""
+               thrust_capacity_N: float | None = None, rules: Rules | None = None
+               ) -> Evaluation:
+    """Every selection check of the catalog for ``model`` under ``duty``; ``rules`` are
+    hdcad's own choices where the catalog leaves one open (see ``hdcad.checks.rules``)."""
+    rules = rules or Rules()
     defaulted = model.is_fd and not duty.lubrication_given
     duty = duty_for_model(model, duty)
     derived = derived_values(duty, model.ratio)
@@ -191,12 +195,12 @@ def run_checks(model: GearModel, duty: Duty, catalog: Catalog,
                 model.get("L10_h"), model.get("L50_h")),
         _thrust(model, catalog, derived["max_torque_Nm"], thrust_capacity_N),
         torsional_resonance(duty.cycle, model.ratio, curve, duty.load_inertia_kgm2,
-                            curve_source),
+                            curve_source, rules.resonance_band),
         lubrication(model.family, model.size, model.ratio, duty,
                     catalog.rows("grease_suitability"), catalog.rows("lubricant_temperature"),
                     float(oil_level) if oil_level else None),
         main_bearing(duty.cycle, duty.external_load, bearing, duty.required_life_h,
-                     bearing_missing, duty.oscillation),
+                     bearing_missing, duty.oscillation, rules.static_safety_min),
     ]
     if model.family == "GH":
         checks.insert(4, continuous_input_speed(duty.cycle, model.ratio))

@@ -17,6 +17,7 @@ from typing import Sequence
 
 from ..duty import Segment
 from .record import CheckResult, Quantity, compared, not_evaluated
+from .rules import label
 
 RESONANCE_BAND = 0.20
 BAND_REASON = (
@@ -104,8 +105,10 @@ TITLE = "Torsional resonance"
 
 
 def torsional_resonance(cycle: Sequence[Segment], ratio: float, curve: StiffnessCurve | None,
-                        inertia_kgm2: float | None, source: str) -> CheckResult:
-    """Steady input speeds against the resonant input speed (separation ≥ 20 % passes)."""
+                        inertia_kgm2: float | None, source: str,
+                        band: float = RESONANCE_BAND) -> CheckResult:
+    """Steady input speeds against the resonant input speed (separation ≥ ``band`` passes;
+    the band is hdcad's own rule, see ``hdcad.checks.rules``)."""
     if inertia_kgm2 is None:
         return not_evaluated("torsional_resonance", TITLE, "stiffness", FORMULA,
                              "load_inertia_kgm2 (add it to the duty)")
@@ -133,8 +136,9 @@ def torsional_resonance(cycle: Sequence[Segment], ratio: float, curve: Stiffness
               "T (operating)": Quantity(worst["torque_Nm"], "N·m"),
               "ni (steady)": Quantity(worst["ni_rpm"], "r/min")}
     note = (f"f = {worst['f_Hz']:.1f} Hz, resonant input speed {worst['N_res_rpm']:.0f} r/min; "
-            + BAND_REASON)
+            + (BAND_REASON if band == RESONANCE_BAND else f"±{band:.0%} band on input speed")
+            + "; " + label("resonance_band", band))
     return compared("torsional_resonance", TITLE, "stiffness", FORMULA, inputs,
-                    worst["separation"], RESONANCE_BAND, "", ">=",
+                    worst["separation"], band, "", ">=",
                     f"seed 000 p.021 (formulas 021-2, 021-3); stiffness {source}", note,
                     {"segments": rows})

@@ -113,11 +113,18 @@ OPTION_NONE = {"motor_flange": "first complete code of the table (part notes nam
 
 def option_rows(options: dict) -> list[dict]:
     """Each design option with its value and whether the design file set it."""
+    from ..checks.rules import Rules
     given = set(options.get("given") or ())
-    return [{"key": k, "unit": "" if v is None else OPTION_UNITS.get(k, ""),
+    rows = [{"key": k, "unit": "" if v is None else OPTION_UNITS.get(k, ""),
              "default": k not in given,
              "value": OPTION_NONE.get(k, "—") if v is None else fmt(v)}
-            for k, v in options.items() if k not in ("extra", "given")]
+            for k, v in options.items() if k not in ("extra", "given", "rules")]
+    changed = options.get("rules") or {}
+    # hdcad's own rules (checks/rules.py): listed so a reviewer sees which were changed
+    rows += [{"key": f"rules.{k}", "unit": "", "default": k not in changed,
+              "value": "from fw (table 034-3 mapping)" if v is None else fmt(v)}
+             for k, v in dict(Rules().as_dict(), **changed).items()]
+    return rows
 
 
 def check_row(c: dict) -> dict:
