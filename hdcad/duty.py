@@ -26,6 +26,7 @@ class Segment:
     torque_Nm: float
     time_s: float
     speed_rpm: float
+    wave_generator_rpm: float = 0.0  # differential use: the adjusting input (0 = held)
 
 
 @dataclass(frozen=True)
@@ -53,6 +54,19 @@ class Oscillation:
 
 
 @dataclass(frozen=True)
+class Adjustment:
+    """FD phase adjuster (seed 001 pp.308-309): drive shaft N1 → … → roller N4."""
+    drive_speed_rpm: float            # N1
+    roller_speed_rpm: float           # N4
+    roller_torque_Nm: float | None = None      # Tw, torque at the roller
+    roller_circumference_mm: float | None = None  # Lw, to state the adjustment on the roller
+    max_adjust_per_turn_deg: float | None = None  # wanted resolution per WG turn
+    drive_torque_Nm: float | None = None       # torque the adjusting drive can give
+    min_teeth: int = 16
+    max_teeth: int = 120
+
+
+@dataclass(frozen=True)
 class Duty:
     cycle: tuple[Segment, ...]
     max_output_speed_rpm: float
@@ -65,6 +79,8 @@ class Duty:
     load_inertia_kgm2: float | None = None
     external_load: ExternalLoad | None = None
     oscillation: Oscillation | None = None
+    use: str = "reducer"  # FD only: "differential" = line shaft on the circular spline S
+    adjustment: Adjustment | None = None
     name: str = field(default="", compare=False)
     lubrication_given: bool = field(default=True, compare=False)  # False: the file names none
 
@@ -82,7 +98,12 @@ def parse_duty(raw: Any, name: str = "") -> Duty:
     """
     from .schema import DutyIn, validated
     d = validated(DutyIn, raw)
-    cycle = tuple(Segment(s.phase, s.torque_Nm, s.time_s, s.speed_rpm) for s in d.cycle)
+    cycle = tuple(Segment(s.phase, s.torque_Nm, s.time_s, s.speed_rpm, s.wave_generator_rpm)
+                  for s in d.cycle)
+    if d.use == "reducer" and any(s.wave_generator_rpm for s in d.cycle):
+        raise InputError("cycle[].wave_generator_rpm", "applies to use: differential only")
+    if d.adjustment is not None and d.use != "differential":
+        raise InputError("adjustment", "applies to use: differential only")
     for i, seg in enumerate(cycle):
         if seg.phase == "rest" and seg.speed_rpm != 0:
             raise InputError(f"cycle[{i}].speed_rpm", f"must be 0 in a rest segment "
@@ -110,6 +131,8 @@ def parse_duty(raw: Any, name: str = "") -> Duty:
             load.radial_N, load.axial_N, load.Lr_m, load.La_m, load.fw),
         oscillation=None if d.oscillation is None else Oscillation(
             d.oscillation.angle_deg, d.oscillation.cycles_per_min),
+        use=d.use, adjustment=None if d.adjustment is None else Adjustment(
+            **d.adjustment.model_dump()),
         name=name, lubrication_given="lubrication" in d.model_fields_set,
     )
 

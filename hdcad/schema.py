@@ -50,6 +50,20 @@ class SegmentIn(_Strict):
     torque_Nm: Torque
     time_s: PositiveTime
     speed_rpm: Speed
+    wave_generator_rpm: _num(-1e5, 1e5, "r/min") = 0.0
+
+
+class AdjustmentIn(_Strict):
+    drive_speed_rpm: PositiveSpeed
+    roller_speed_rpm: PositiveSpeed
+    roller_torque_Nm: _num(0.0, 1e7, "N·m") | None = None
+    roller_circumference_mm: _num(0.0, 1e5, "mm", strict_low=True) | None = None
+    max_adjust_per_turn_deg: _num(0.0, 360.0, "deg", strict_low=True) | None = None
+    drive_torque_Nm: _num(0.0, 1e7, "N·m", strict_low=True) | None = None
+    min_teeth: Annotated[int, Field(ge=8, le=400, strict=True,
+                                    description="a whole number from 8 to 400")] = 16
+    max_teeth: Annotated[int, Field(ge=8, le=400, strict=True,
+                                    description="a whole number from 8 to 400")] = 120
 
 
 class ShockIn(_Strict):
@@ -87,6 +101,8 @@ class DutyIn(_Strict):
     load_inertia_kgm2: _num(0.0, 1e6, "kg·m²", strict_low=True) | None = None
     external_load: ExternalLoadIn | None = None
     oscillation: OscillationIn | None = None
+    use: Literal["reducer", "differential"] = "reducer"
+    adjustment: AdjustmentIn | None = None
 
 
 class RulesIn(_Strict):

@@ -109,3 +109,41 @@ def test_hdcads_own_rules_are_labelled_and_can_be_changed(catalog):
     rows = {r["key"]: r for r in option_rows(options.as_dict())}
     assert rows["rules.resonance_band"]["value"] == "0.6" and not rows["rules.resonance_band"]["default"]
     assert rows["rules.adjustment_efficiency"]["default"] and Rules().adjustment_efficiency == 0.6
+
+
+def test_fd_phase_adjuster_example_through_the_duty_file(catalog):
+    # seed 001 p.309: FD-25-80, N1 = 500 → N4 = 120 r/min: Z1..Z4 = 30, 16, 36, 16; N3 = 222.2,
+    # N2 = 225 r/min; one WG turn = 2.4° = 3.3 mm on a 500 mm roller; adjustment torque
+    # 7 kgf·m × 16/30 × 1/80 × 1/0.6 = 0.0778 kgf·m = 0.763 N·m (the seed rounds to 0.07)
+    from hdcad.duty import load_duty
+    from hdcad.resources import examples_dir
+    duty = load_duty(examples_dir() / "duty_fd_phase_adjuster.yaml")
+    ev = run_checks(resolve("FD-25-80-0", catalog), duty, catalog)
+    train = ev.check("fd_gear_train")
+    assert train.details["Z"] == [30, 16, 36, 16] and train.status == "pass"
+    assert round(train.details["N3_rpm"], 1) == 222.2 and round(train.details["N2_rpm"]) == 225
+    phase = ev.check("fd_phase_adjustment")
+    assert phase.value == pytest.approx(2.4) and "3.3 mm" in phase.note
+    torque = ev.check("fd_adjustment_torque")
+    assert torque.value == pytest.approx(68.65 * 16 / 30 / 80 / 0.6)
+    assert torque.value / 9.80665 == pytest.approx(0.0778, abs=5e-5)
+    assert ev.check("ratio_limit").status == "not_evaluated"
+
+
+def test_fd_differential_is_rated_at_the_relative_speed(catalog):
+    # line shaft at 3000 r/min on S, WG held: relative speed 3000 r/min → the next higher
+    # listed speed of table 310-1, 3500 r/min: FD-25-80 rated 46 N·m (seed 001 p.310)
+    raw = {"use": "differential", "lubrication": "oil",
+           "cycle": [{"phase": "steady", "torque_Nm": 40, "time_s": 10, "speed_rpm": 3000}],
+           "max_output_speed_rpm": 3000, "max_input_speed_rpm": 3000, "required_life_h": 7000}
+    avg = _check(catalog, "FD-25-80-2", parse_duty(raw), "avg_torque")
+    assert avg.limit == 46 and avg.status == "pass" and "3500 r/min row" in avg.note
+
+
+def test_differential_use_is_for_fd_only(catalog):
+    from hdcad.errors import InputError
+    raw = {"use": "differential", "cycle": [{"phase": "steady", "torque_Nm": 40, "time_s": 10,
+                                             "speed_rpm": 10}],
+           "max_output_speed_rpm": 14, "max_input_speed_rpm": 1800, "required_life_h": 7000}
+    with pytest.raises(InputError, match="FD models only"):
+        run_checks(resolve("CSF-45-120-GH", catalog), parse_duty(raw), catalog)

@@ -16,8 +16,10 @@ from .life import wg_life
 from .load_pattern import average_output_speed, average_torque
 from .lubrication import lubrication
 from .main_bearing import main_bearing
-from .record import CheckResult, FAIL, NOT_EVALUATED, WARN
+from .record import CheckResult, FAIL, NOT_EVALUATED, WARN, not_evaluated
 from .rules import Rules
+from .differential import adjustment_checks, relative_speeds
+from ..errors import InputError
 from .speed import continuous_input_speed, avg_input_speed, max_input_speed, ratio_limit
 from .stiffness import StiffnessCurve, torsional_resonance
 from .strength import shock_count
@@ -72,13 +74,20 @@ class Evaluation:
 
 
 def derived_values(duty: Duty, ratio: float) -> dict[str, float]:
-    """Tav, no_av, ni_av, ni_max and the largest torque of the duty."""
+    """Tav, no_av, ni_av, ni_max and the largest torque of the duty.
+
+    In differential use (FD) the "input" speeds are the wave generator's speed relative to
+    the circular spline S, which the FD ratings are given against (seed 001 p.310)."""
     no_av = average_output_speed(duty.cycle)
     peak = max([abs(s.torque_Nm) for s in duty.cycle] +
                ([duty.shock.torque_Nm] if duty.shock else []))
+    if duty.use == "differential":
+        rel = relative_speeds(duty.cycle)
+        ni_av, ni_max = rel["avg"], max(rel["max"], duty.max_output_speed_rpm)
+    else:
+        ni_av, ni_max = no_av * ratio, duty.max_output_speed_rpm * ratio
     return {"avg_torque_Nm": average_torque(duty.cycle), "avg_output_speed_rpm": no_av,
-            "avg_input_speed_rpm": no_av * ratio,
-            "max_input_speed_rpm": duty.max_output_speed_rpm * ratio,
+            "avg_input_speed_rpm": ni_av, "max_input_speed_rpm": ni_max,
             "max_output_speed_rpm": duty.max_output_speed_rpm, "max_torque_Nm": peak,
             "ratio": float(ratio)}
 
@@ -100,6 +109,8 @@ def stiffness_curve(model: GearModel) -> tuple[StiffnessCurve | None, str]:
 def loaded_input_speed_rpm(duty: Duty, ratio: float) -> float:
     """Time-weighted input speed [r/min] of the moving segments only: the FD rating applies
     at the speed the gear turns under load, not at an average diluted by rest time."""
+    if duty.use == "differential":
+        return relative_speeds(duty.cycle)["loaded"]
     moving = [s for s in duty.cycle if s.speed_rpm > 0]
     return ratio * sum(s.speed_rpm * s.time_s for s in moving) / sum(s.time_s for s in moving)
 
@@ -162,6 +173,12 @@ FD_DEFAULT_LUBRICATION = ("oil: the duty names no lubricant and FD units run in 
                           "p.315: grease only for ED ≤ 10 % and ≤ 10 min continuous running)")
 
 
+def _line_driven() -> CheckResult:
+    return not_evaluated("ratio_limit", "Ratio against motor speed", "speed",
+                         "ni_max / no_max ≥ R", "nothing: in differential use the line shaft "
+                         "drives the circular spline S, no motor drives the input through R")
+
+
 def duty_for_model(model: GearModel, duty: Duty) -> Duty:
     """The duty as evaluated: an FD whose duty names no lubricant is oil-lubricated."""
     if model.is_fd and not duty.lubrication_given:
@@ -177,19 +194,25 @@ def run_checks(model: GearModel, duty: Duty, catalog: Catalog,
     rules = rules or Rules()
     defaulted = model.is_fd and not duty.lubrication_given
     duty = duty_for_model(model, duty)
+    if duty.use == "differential" and not model.is_fd:
+        raise InputError("use", f"differential applies to FD models only ({model.code} is "
+                                f"{model.family})")
+    differential = duty.use == "differential"
     derived = derived_values(duty, model.ratio)
     limits = _fd_limits(model, duty, derived) if model.is_fd else _cup_limits(model)
     curve, curve_source = stiffness_curve(model)
     bearing, bearing_missing = _main_bearing_data(model, catalog)
     oil_level = model.get("oil_level_A_mm")
     checks = [
-        ratio_limit(duty.max_input_speed_rpm, duty.max_output_speed_rpm, model.ratio),
+        (_line_driven() if differential else
+         ratio_limit(duty.max_input_speed_rpm, duty.max_output_speed_rpm, model.ratio)),
         avg_torque(derived["avg_torque_Nm"], *limits["avg_torque"]),
         avg_input_speed(derived["avg_input_speed_rpm"], *limits["avg_input_speed"]),
         max_input_speed(derived["max_input_speed_rpm"], *limits["max_input_speed"]),
         peak_torque(duty.cycle, *limits["peak_torque"]),
         momentary_torque(duty.shock, *limits["momentary"]),
-        shock_count(duty.shock, model.ratio),
+        # differential: the shock's speed is the line shaft's, i.e. the relative WG speed
+        shock_count(duty.shock, 1 if differential else model.ratio),
         wg_life(derived["avg_torque_Nm"], derived["avg_input_speed_rpm"], duty.required_life_h,
                 model.get("rated_torque_Nm"), model.get("rated_input_speed_rpm"),
                 model.get("L10_h"), model.get("L50_h")),
@@ -204,6 +227,7 @@ def run_checks(model: GearModel, duty: Duty, catalog: Catalog,
     ]
     if model.family == "GH":
         checks.insert(4, continuous_input_speed(duty.cycle, model.ratio))
+    checks += adjustment_checks(duty, model.ratio, rules.adjustment_efficiency)
     if defaulted:
         lub = next(c for c in checks if c.id == "lubrication")
         lub.note = f"{FD_DEFAULT_LUBRICATION}; {lub.note}"

@@ -22,7 +22,8 @@ from .format import (check_label, fmt, margin_text, relation_text, status_text,
 FAMILY_TITLES = {"torque": "Torque", "speed": "Speed", "strength": "Flexspline strength",
                  "life": "Wave-generator life", "thrust": "Thrust force",
                  "stiffness": "Stiffness and resonance", "lubrication": "Lubrication",
-                 "bearing": "Main bearing", "geometry": "Geometry (generated parts)"}
+                 "bearing": "Main bearing", "geometry": "Geometry (generated parts)",
+                 "adjustment": "FD phase adjuster (differential use)"}
 DUTY_UNITS = {"torque_Nm": "N·m", "time_s": "s", "speed_rpm": "r/min"}
 OPTION_UNITS = {"input_shaft_mm": "mm", "wall_mm": "mm", "running_gap_mm": "mm",
                 "input_thrust_capacity_N": "N"}
@@ -75,10 +76,12 @@ def duty_summary(result: dict) -> list[tuple[str, str]]:
     return [("average output torque Tav", f"{fmt(d['avg_torque_Nm'])} N·m"),
             ("largest torque", f"{fmt(d['max_torque_Nm'])} N·m"),
             ("average output speed", f"{fmt(d['avg_output_speed_rpm'])} r/min"),
-            ("average / max input speed", f"{fmt(d['avg_input_speed_rpm'])} / "
-                                          f"{fmt(d['max_input_speed_rpm'])} r/min"),
+            ("average / max WG speed relative to S" if duty.get("use") == "differential"
+             else "average / max input speed", f"{fmt(d['avg_input_speed_rpm'])} / "
+                                               f"{fmt(d['max_input_speed_rpm'])} r/min"),
             ("ratio", fmt(d["ratio"])),
             ("required life L10", f"{fmt(duty['required_life_h'])} h"),
+            ("use", duty.get("use", "reducer")),
             ("lubrication", duty["lubrication"] + (f" ({duty['grease']})"
                                                   if duty["lubrication"] == "grease" else ""))]
 
