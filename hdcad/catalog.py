@@ -295,13 +295,12 @@ def _merge_rows(tables: dict[str, Table], name: str, rows: list[dict], where: st
         columns, keys = OVERLAY_ONLY_TABLES[name]
         tables[name] = Table(name, columns or (), [], source, "overlay", {})
     table = tables[name]
+    schema = _row_schema(name, tuple(columns or ()), tuple(keys)) if columns else None
     for index, raw in enumerate(rows):
         row_where = f"{where}[{index}]"
-        if columns:
-            unknown = sorted(set(raw) - set(columns) - {"source"})
-            if unknown:
-                raise InputError(row_where, f"unknown column(s) {', '.join(unknown)}; "
-                                            f"allowed: {', '.join(columns)}")
+        if schema is not None:
+            from .schema import validated
+            validated(schema, raw, row_where)
         missing = [k for k in keys if raw.get(k) is None]
         if missing:
             raise InputError(row_where, f"missing key column(s) {', '.join(missing)}")
@@ -328,3 +327,37 @@ def _check_overlay_row(table: str, row: dict, where: str) -> None:
     if table == "main_bearing" and row.get("bearing_type") not in BEARING_TYPES:
         raise InputError(f"{where}.bearing_type", f"must be one of {', '.join(BEARING_TYPES)} "
                                                   f"(got {str(row.get('bearing_type'))[:40]!r})")
+
+
+@lru_cache(maxsize=None)
+def _row_schema(table: str, columns: tuple[str, ...], keys: tuple[str, ...]):
+    """A pydantic model of one overlay row of ``table``, typed from its column names: text
+    columns, whole numbers, positive physical values (``POSITIVE_UNITS``), signed
+    temperatures and other non-negative numbers; key columns required, others optional."""
+    from typing import Annotated, Optional
+
+    from pydantic import ConfigDict, Field, create_model
+
+    def field_type(column: str):
+        if column in TEXT_COLUMNS:
+            return Annotated[str, Field(strict=False, max_length=200,
+                                        description="a text value")]
+        if column in INTEGER_COLUMNS:
+            return Annotated[int, Field(strict=True, ge=1, le=10**6,
+                                        description="a whole number >= 1")]
+        if column.endswith(SIGNED_UNITS):
+            return Annotated[float, Field(strict=True, ge=-273.15, le=1e4, allow_inf_nan=False,
+                                          description="a number in [-273.15, 1e4]")]
+        low = {"gt": 0.0} if _unit_of(column) in POSITIVE_UNITS else {"ge": 0.0}
+        number = Annotated[float, Field(strict=True, le=1e12, allow_inf_nan=False,
+                                        description=f"a number {'> 0' if 'gt' in low else '>= 0'}"
+                                                    " and <= 1e12", **low)]
+        if _unit_of(column):
+            return number
+        # no unit in the name: a count or a designation (cs_bolt_thread: "M4")
+        return number | Annotated[str, Field(max_length=200)]
+
+    fields = {c: ((field_type(c), ...) if c in keys else (Optional[field_type(c)], None))
+              for c in columns if c != "source"}
+    fields["source"] = (Optional[str], None)
+    return create_model(f"{table}_row", __config__=ConfigDict(extra="forbid"), **fields)

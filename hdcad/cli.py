@@ -352,9 +352,11 @@ _interrupted = False
 
 
 def _on_interrupt(signum, frame) -> None:
-    # remembered: an interrupt inside a C extension's import can surface as ImportError
+    # remembered: an interrupt inside a C extension's import can surface as ImportError;
+    # later interrupts are ignored so that the clean-up (staging folder, workers) finishes
     global _interrupted
     _interrupted = True
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
     raise KeyboardInterrupt
 
 

@@ -147,7 +147,7 @@ def run_design(model: GearModel, duty: Duty, options: DesignOptions, catalog: Ca
     did not write (otherwise an InputError before any work).
     """
     from .output import json_text, staged_dir
-    from .parallel import running, side_executor
+    from .parallel import interrupts_deferred, running, side_executor
     from .report.sheet import make_bolt_figures, make_figures, warm_up, write_calc_sheet
 
     from .output import check_target
@@ -163,9 +163,10 @@ def run_design(model: GearModel, duty: Duty, options: DesignOptions, catalog: Ca
         plots = side.submit(make_figures, evaluation, stage)
         side.submit(warm_up)
         # cadquery is imported here, after the side process has started
-        from .checks.geometric import geometric_checks
-        from .geometry.build import build_parts, interference_mm3, part_mass_kg
-        from .geometry.clearance import inner_wall_clearance
+        with interrupts_deferred():
+            from .checks.geometric import geometric_checks
+            from .geometry.build import build_parts, interference_mm3, part_mass_kg
+            from .geometry.clearance import inner_wall_clearance
         parts = clock.lap("build", build_parts(model, catalog, options))
         masses = {p.name: part_mass_kg(p, options.density_kg_m3) for p in parts}
         evaluation.checks += geometric_checks(model, parts, options, catalog)

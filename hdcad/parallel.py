@@ -49,6 +49,28 @@ def interrupts_ignored() -> Iterator[None]:
         signal.signal(signal.SIGINT, previous)
 
 
+@contextmanager
+def interrupts_deferred() -> Iterator[None]:
+    """Ctrl-C inside this block takes effect when it ends (main thread only).
+
+    For imports of large C++ extensions (OCP under cadquery): an interrupt raised inside a
+    module's initialisation can crash the interpreter instead of unwinding it.
+    """
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    caught = []
+    previous = signal.signal(signal.SIGINT, lambda signum, frame: caught.append(signum))
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGINT, previous)
+    if caught:
+        if callable(previous):
+            previous(signal.SIGINT, None)  # the CLI's handler: remembers, then raises
+        raise KeyboardInterrupt
+
+
 class QuietProcessPool(ProcessPoolExecutor):
     """A process pool whose workers (started on demand by submit) ignore Ctrl-C."""
 
@@ -69,6 +91,20 @@ def running(executor: Executor) -> Iterator[Executor]:
     executor.shutdown(wait=True)
 
 
+def _die_with_parent() -> None:
+    """Worker start-up: on Linux the kernel kills the worker when its parent dies, so a
+    SIGKILLed run leaves no worker writing into its staging folder."""
+    if not os.path.exists("/proc/self"):
+        return
+    try:
+        import ctypes
+        libc = ctypes.CDLL(None, use_errno=True)
+        PR_SET_PDEATHSIG = 1
+        libc.prctl(PR_SET_PDEATHSIG, signal.SIGKILL, 0, 0, 0)
+    except (OSError, AttributeError):  # no prctl: the worker ends at its next read instead
+        pass
+
+
 def cores() -> int:
     """Cores this process may use."""
     try:
@@ -79,7 +115,8 @@ def cores() -> int:
 
 def process_pool(workers: int) -> ProcessPoolExecutor:
     """A pool of fresh interpreters (spawn: no state inherited) that ignore Ctrl-C."""
-    return QuietProcessPool(max_workers=workers, mp_context=multiprocessing.get_context("spawn"))
+    return QuietProcessPool(max_workers=workers, initializer=_die_with_parent,
+                            mp_context=multiprocessing.get_context("spawn"))
 
 
 def side_executor(parallel: bool = True) -> Executor:

@@ -158,11 +158,11 @@ tables:
     ("tables: {}", "source"),
     ("source: x\ntables: {nonsense: []}", "unknown table"),
     ("source: x\ntables: {gh_ratings: [{series: CSF-GH, size: 20, ratio: 50, bogus_Nm: 1}]}",
-     "unknown column"),
+     "unknown key"),
     ("source: x\ntables: {gh_ratings: [{series: CSF-GH, size: 20, ratio: 50, "
-     "rated_torque_2000_Nm: -3}]}", ">= 0"),
+     "rated_torque_2000_Nm: -3}]}", "> 0"),
     ("source: x\ntables: {gh_ratings: [{series: CSF-GH, size: 20, "
-     "rated_torque_2000_Nm: 3}]}", "missing key"),
+     "rated_torque_2000_Nm: 3}]}", "required"),
     ("source: x\ntables: {main_bearing: [{model: A, C_N: abc}]}", "must be a number"),
     ("source: [unclosed", "not valid YAML"),
 ])

@@ -20,7 +20,8 @@ def correction_factor(alpha: float, curve: Sequence[tuple[float, float]]) -> flo
     """Ke at α from the catalog's (α, Ke) points; None where the curve is unknown.
 
     Ke = 1 for α ≥ 1 (seed 000 p.023). Between two known points Ke is interpolated
-    linearly; below the lowest known point the lost graph cannot be read, so None.
+    linearly (hdcad's assumption: graph 023-1 is lost, its shape between the points is
+    unknown); below the lowest known point the lost graph cannot be read, so None.
     """
     if alpha >= 1.0:
         return 1.0
