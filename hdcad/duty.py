@@ -61,6 +61,7 @@ class Adjustment:
     roller_torque_Nm: float | None = None      # Tw, torque at the roller
     roller_circumference_mm: float | None = None  # Lw, to state the adjustment on the roller
     max_adjust_per_turn_deg: float | None = None  # wanted resolution per WG turn
+    total_phase_deg: float | None = None  # a phase shift of the roller to make [deg]
     drive_torque_Nm: float | None = None       # torque the adjusting drive can give
     min_teeth: int = 16
     max_teeth: int = 120

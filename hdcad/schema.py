@@ -59,6 +59,7 @@ class AdjustmentIn(_Strict):
     roller_torque_Nm: _num(0.0, 1e7, "N·m") | None = None
     roller_circumference_mm: _num(0.0, 1e5, "mm", strict_low=True) | None = None
     max_adjust_per_turn_deg: _num(0.0, 360.0, "deg", strict_low=True) | None = None
+    total_phase_deg: _num(0.0, 1e6, "deg", strict_low=True) | None = None
     drive_torque_Nm: _num(0.0, 1e7, "N·m", strict_low=True) | None = None
     min_teeth: Annotated[int, Field(ge=8, le=400, strict=True,
                                     description="a whole number from 8 to 400")] = 16

@@ -128,6 +128,12 @@ def test_fd_phase_adjuster_example_through_the_duty_file(catalog):
     assert torque.value == pytest.approx(68.65 * 16 / 30 / 80 / 0.6)
     assert torque.value / 9.80665 == pytest.approx(0.0778, abs=5e-5)
     assert ev.check("ratio_limit").status == "not_evaluated"
+    # a wanted resolution and a total shift: 2.4° per turn ≤ 3°, 36° takes 15 turns
+    from dataclasses import replace
+    finer = replace(duty, adjustment=replace(duty.adjustment, max_adjust_per_turn_deg=3.0,
+                                             total_phase_deg=36.0))
+    phase = run_checks(resolve("FD-25-80-0", catalog), finer, catalog).check("fd_phase_adjustment")
+    assert phase.status == "pass" and "takes 15 turns" in phase.note
 
 
 def test_fd_differential_is_rated_at_the_relative_speed(catalog):

@@ -91,6 +91,11 @@ def _phase(adj: Adjustment, ratio: int, train) -> CheckResult:
         arc = arc_length_mm(angle, adj.roller_circumference_mm)
         inputs["Lw"] = Quantity(adj.roller_circumference_mm, "mm")
         note += f" = {arc:.2g} mm on the roller"
+    if adj.total_phase_deg:
+        turns = adj.total_phase_deg / angle
+        inputs["total phase wanted"] = Quantity(adj.total_phase_deg, "deg")
+        note += (f"; a {adj.total_phase_deg:g}° phase shift takes {turns:.3g} turns of the "
+                 "wave generator")
     title, formula = "Phase adjustment per WG turn", "Δθ = (Z2/Z1)·(1/R)·360° ≤ Δθ wanted"
     if adj.max_adjust_per_turn_deg is None:
         return not_evaluated("fd_phase_adjustment", title, FAMILY, formula,
