@@ -39,6 +39,27 @@ PositiveSpeed = _num(0.0, 1e5, "r/min", strict_low=True)
 PositiveHours = _num(0.0, 1e9, "h", strict_low=True)
 Force = _num(0.0, 1e9, "N")
 Length = _num(0.0, 1e3, "m")
+# the bounds of single fields, named so that annotations stay plain types
+WaveGeneratorRpmRange = _num(-1e5, 1e5, "r/min")
+RollerTorqueNmRange = _num(0.0, 1e7, "N·m")
+RollerCircumferenceMmRange = _num(0.0, 1e5, "mm", strict_low=True)
+MaxAdjustPerTurnDegRange = _num(0.0, 360.0, "deg", strict_low=True)
+TotalPhaseDegRange = _num(0.0, 1e6, "deg", strict_low=True)
+DriveTorqueNmRange = _num(0.0, 1e7, "N·m", strict_low=True)
+FwRange = _num(1.0, 3.0, "")
+AngleDegRange = _num(0.0, 360.0, "deg", strict_low=True)
+CyclesPerMinRange = _num(0.0, 1e5, "cpm", strict_low=True)
+AmbientCRange = _num(-60.0, 200.0, "°C")
+LoadInertiaKgm2Range = _num(0.0, 1e6, "kg·m²", strict_low=True)
+ResonanceBandRange = _num(0.01, 1.0, "")
+StaticSafetyMinRange = _num(1.0, 10.0, "")
+AdjustmentEfficiencyRange = _num(0.05, 1.0, "")
+InputShaftMmRange = _num(1.0, 200.0, "mm")
+WallMmRange = _num(2.0, 60.0, "mm")
+FrictionCoefficientRange = _num(0.05, 0.5, "")
+BoltSafetyFactorRange = _num(1.0, 5.0, "")
+RunningGapMmRange = _num(0.2, 5.0, "mm")
+InputThrustCapacityNRange = _num(0.0, 1e7, "N")
 
 
 class _Strict(BaseModel):
@@ -50,17 +71,17 @@ class SegmentIn(_Strict):
     torque_Nm: Torque
     time_s: PositiveTime
     speed_rpm: Speed
-    wave_generator_rpm: _num(-1e5, 1e5, "r/min") = 0.0
+    wave_generator_rpm: WaveGeneratorRpmRange = 0.0
 
 
 class AdjustmentIn(_Strict):
     drive_speed_rpm: PositiveSpeed
     roller_speed_rpm: PositiveSpeed
-    roller_torque_Nm: _num(0.0, 1e7, "N·m") | None = None
-    roller_circumference_mm: _num(0.0, 1e5, "mm", strict_low=True) | None = None
-    max_adjust_per_turn_deg: _num(0.0, 360.0, "deg", strict_low=True) | None = None
-    total_phase_deg: _num(0.0, 1e6, "deg", strict_low=True) | None = None
-    drive_torque_Nm: _num(0.0, 1e7, "N·m", strict_low=True) | None = None
+    roller_torque_Nm: RollerTorqueNmRange | None = None
+    roller_circumference_mm: RollerCircumferenceMmRange | None = None
+    max_adjust_per_turn_deg: MaxAdjustPerTurnDegRange | None = None
+    total_phase_deg: TotalPhaseDegRange | None = None
+    drive_torque_Nm: DriveTorqueNmRange | None = None
     min_teeth: Annotated[int, Field(ge=8, le=400, strict=True,
                                     description="a whole number from 8 to 400")] = 16
     max_teeth: Annotated[int, Field(ge=8, le=400, strict=True,
@@ -80,12 +101,12 @@ class ExternalLoadIn(_Strict):
     axial_N: Force
     Lr_m: Length
     La_m: Length
-    fw: _num(1.0, 3.0, "") = 1.5  # seed 000 table 032-3: smooth 1-1.2 … shocks 1.5-3
+    fw: FwRange = 1.5  # seed 000 table 032-3: smooth 1-1.2 … shocks 1.5-3
 
 
 class OscillationIn(_Strict):
-    angle_deg: _num(0.0, 360.0, "deg", strict_low=True)
-    cycles_per_min: _num(0.0, 1e5, "cpm", strict_low=True)
+    angle_deg: AngleDegRange
+    cycles_per_min: CyclesPerMinRange
 
 
 class DutyIn(_Strict):
@@ -98,8 +119,8 @@ class DutyIn(_Strict):
     lubrication: Literal["grease", "oil"] = "grease"
     grease: Literal["SK-1A", "SK-2", "4B No.2"] = "SK-1A"
     # the widest lubricant limit in tables 019-2/019-3 is -50…+160 °C
-    ambient_C: _num(-60.0, 200.0, "°C") | None = None
-    load_inertia_kgm2: _num(0.0, 1e6, "kg·m²", strict_low=True) | None = None
+    ambient_C: AmbientCRange | None = None
+    load_inertia_kgm2: LoadInertiaKgm2Range | None = None
     external_load: ExternalLoadIn | None = None
     oscillation: OscillationIn | None = None
     use: Literal["reducer", "differential"] = "reducer"
@@ -107,23 +128,23 @@ class DutyIn(_Strict):
 
 
 class RulesIn(_Strict):
-    resonance_band: _num(0.01, 1.0, "") = 0.20
-    static_safety_min: _num(1.0, 10.0, "") | None = None
-    adjustment_efficiency: _num(0.05, 1.0, "") = 0.6
+    resonance_band: ResonanceBandRange = 0.20
+    static_safety_min: StaticSafetyMinRange | None = None
+    adjustment_efficiency: AdjustmentEfficiencyRange = 0.6
 
 
 class DesignOptionsIn(_Strict):
     motor_flange: Annotated[str, Field(min_length=1, max_length=8, strict=True,
                                        description="a flange code such as KG")] | None = None
-    input_shaft_mm: _num(1.0, 200.0, "mm") | None = None
+    input_shaft_mm: InputShaftMmRange | None = None
     material: Literal["steel", "aluminium", "cast_iron"] = "steel"
-    wall_mm: _num(2.0, 60.0, "mm") = 8.0
+    wall_mm: WallMmRange = 8.0
     bolt_class: Literal["8.8", "10.9", "12.9"] = "12.9"
     axis: Literal["horizontal", "vertical"] = "horizontal"
-    friction_coefficient: _num(0.05, 0.5, "") = 0.15
-    bolt_safety_factor: _num(1.0, 5.0, "") = 1.5
-    running_gap_mm: _num(0.2, 5.0, "mm") = 1.0
-    input_thrust_capacity_N: _num(0.0, 1e7, "N") | None = None
+    friction_coefficient: FrictionCoefficientRange = 0.15
+    bolt_safety_factor: BoltSafetyFactorRange = 1.5
+    running_gap_mm: RunningGapMmRange = 1.0
+    input_thrust_capacity_N: InputThrustCapacityNRange | None = None
     rules: RulesIn | None = None
 
 
