@@ -27,9 +27,11 @@ TEXT_COLUMNS = {
     "series", "thread", "M_thread", "K_thread", "Q_bearing", "flange_code", "flange_type",
     "table", "note", "source", "lubricant", "kind", "basis", "grease", "rating", "condition",
     "path", "lubrication", "event", "input_codes", "model", "bearing_type", "family",
+    "pilot_kind", "pilot_fit", "bolt_thread", "oring_d1_d2_mm", "sealant",
 }
 # Columns that are whole numbers.
 INTEGER_COLUMNS = {"size", "ratio", "ratio_min", "ratio_max", "R", "L_count", "J_count",
+                   "bolt_count",
                    "z_num1", "z_num2", "z_den1", "z_den2"}
 # Units whose values may be negative (temperatures); every other measured value is >= 0.
 SIGNED_UNITS = ("_C",)
@@ -55,6 +57,16 @@ OVERLAY_ONLY_TABLES: dict[str, tuple[tuple[str, ...], tuple[str, ...]]] = {
          "wg_hub_width_mm", "wg_hub_bore_mm", "wg_protrusion_mm", "cring_hook_radius_mm",
          "cring_protrusion_mm", "source"),
         ("series", "size"),
+    ),
+    # the gear-head housing face a GH motor flange bolts onto: in the lost figures 053-1 …
+    # 064-1 and Harmonic Drive's delivery drawings, not in the seeds (HOUSING_RULES §5 (1))
+    "gh_input_interface": (
+        ("series", "size", "pilot_diameter_mm", "pilot_kind", "pilot_fit", "pilot_depth_mm",
+         "bolt_circle_mm", "bolt_count", "bolt_thread", "clearance_hole_mm",
+         "bolt_start_angle_deg", "outline_mm", "face_to_coupling_mm",
+         "coupling_outer_diameter_mm", "oring_d1_d2_mm", "sealant", "source"),
+        ("series", "size", "pilot_diameter_mm", "pilot_kind", "pilot_depth_mm",
+         "bolt_circle_mm", "bolt_count", "bolt_thread"),
     ),
     # CSF/CSG-2A-GR "recommended housing dimensions" (inner wall); see catalog/README.md
     "component_housing": (

@@ -127,6 +127,14 @@ def geometric_checks(model: GearModel, parts: list, options: DesignOptions,
                      catalog: Catalog) -> list[CheckResult]:
     """input_bore and one bolt_pattern record per bolt circle of every part."""
     checks = [_bore_check(model, catalog, options)]
+    if model.family == "GH" and not catalog.has("gh_input_interface"):
+        checks.append(not_evaluated(
+            "gh_interface", "Gear-head side of the motor flange", "geometry",
+            "pilot, bolt circle and screws of the gear-head housing face",
+            "the gear-head housing face (overlay table gh_input_interface: pilot Ø and kind, "
+            "pilot depth, bolt circle, bolt count and thread, outline, O-ring); the seeds do "
+            "not give it (lost figures 053-1 … 064-1), so the flange is NOT FOR MANUFACTURE",
+            source="seed 003 tables 053-1 … 064-1 (motor side only)"))
     known = momentary_torque_Nm(model)
     out_torque = known or 0.0
     for part in parts:

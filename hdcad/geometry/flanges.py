@@ -18,6 +18,7 @@ import cadquery as cq
 
 from ..catalog import Catalog
 from ..design_options import DesignOptions
+from .gh_interface import NOT_FOR_MANUFACTURE, gear_head_face, iso286_fit
 from .part import BoltCircle, Part
 from .primitives import cylinder, ring_points, single_solid
 from .standards import (DIN_974_1_CBORE_MM, ISO_261_PITCH_MM, ISO_273_MEDIUM_MM, ISO_4762_HEAD_MM,
@@ -199,6 +200,8 @@ class GHMotorFlange:
         code = str(flange_code).strip().upper()
         self.series, self.size, self.code = series, size, code
         self.label = f"{series}-{size} motor flange {code}"
+        self.catalog = catalog
+        self.face = gear_head_face(catalog, series, size)
         self.row = self._row(catalog)
         self._dimension()
         self._check()
@@ -256,9 +259,17 @@ class GHMotorFlange:
         self.square = row["square_mm"]
         # round flange: bolt circle + thread Ø + one thread Ø of wall each side
         self.outer = None if self.square else self.ring + 3 * d
+        if self.face is not None and not self.square and self.face.row.get("outline_mm"):
+            # the gear-head face's outline, when larger than the motor side needs
+            self.outer = max(self.outer, self.face.row["outline_mm"])
         self.bore = row["coupling_bore_max_mm"] + 2 * BORE_CLEARANCE_MM
         self.thickness = max(self.options.wall_mm, self.pilot_depth + MIN_FLOOR_MM,
                              self.drill_depth + MIN_FLOOR_MM)
+        if self.face is not None:
+            # under the counterbores, and between a gear-head recess and the motor side
+            recess = 0.0 if self.face.spigot else self.face.row["pilot_depth_mm"]
+            self.thickness = max(self.thickness, self.face.least_thickness_mm(MIN_UNDER_HEAD_MM),
+                                 recess + max(self.pilot_depth, self.drill_depth) + MIN_FLOOR_MM)
         self.hole_for_fit = d  # thread major diameter: the ligament is measured from it
 
     def _check(self) -> None:
@@ -285,16 +296,31 @@ class GHMotorFlange:
                    cylinder(self.pilot, t - self.pilot_depth, t + 1)]
         for x, y in ring_points(self.ring, MOTOR_HOLE_COUNT, MOTOR_HOLE_START_DEG):
             cutters.append(cylinder(self.tap_drill, t - self.drill_depth, t + 1, x, y))
+        circles = [BoltCircle("motor screws", self.ring, MOTOR_HOLE_COUNT, self.tap_drill,
+                              self.thread, "tapped", self.thread_depth,
+                              annulus_inner_mm=self.pilot, annulus_outer_mm=self.outer,
+                              outline_square_mm=self.square,
+                              start_angle_deg=MOTOR_HOLE_START_DEG)]
+        if self.face is not None:
+            add, cut = self.face.solids(t, self.bore)
+            body = body.fuse(*add) if add else body
+            cutters += cut
+            circles.append(self.face.bolt_circle(t, self.bore, self.outer, self.square))
         return Part(name="motor_flange", shape=single_solid(body, cutters, self.label),
                     color=MOTOR_FLANGE_COLOR, dimensions=self._dimensions(),
-                    bolt_circles=[BoltCircle("motor screws", self.ring, MOTOR_HOLE_COUNT,
-                                             self.tap_drill, self.thread, "tapped",
-                                             self.thread_depth,
-                                             annulus_inner_mm=self.pilot,
-                                             annulus_outer_mm=self.outer,
-                                             outline_square_mm=self.square,
-                                             start_angle_deg=MOTOR_HOLE_START_DEG)],
-                    notes=self._notes())
+                    bolt_circles=circles, notes=self._notes(), fits=self._fits())
+
+    def _fits(self) -> list:
+        fits = [iso286_fit(self.catalog, "motor pilot", self.pilot, "H7",
+                           "motor spigot (j6/h7 per the motor maker)",
+                           f"seed 003 table {self.row['table']}: pilot A (H7)")]
+        if self.face is not None:
+            r = self.face.row
+            fits.append(iso286_fit(self.catalog, "gear-head pilot", r["pilot_diameter_mm"],
+                                   self.face.pilot_fit(), "gear-head housing pilot",
+                                   "locates the flange on the gear head (HOUSING_RULES §4: "
+                                   "pilot H7/g6)"))
+        return fits
 
     def _dimensions(self) -> dict[str, float]:
         size = ({"square_mm": self.square} if self.square else {"outer_diameter_mm": self.outer})
@@ -317,8 +343,7 @@ class GHMotorFlange:
             f"drilled {self.drill_depth:g} deep = thread depth + {TAP_RUNOUT_PITCHES:g}·P",
             f"coupling clearance bore Ø{self.bore:g} = max coupling bore + 2 × "
             f"{BORE_CLEARANCE_MM:g} mm (coupling outside diameter is not in the seed)",
-            "gear-head side: flat mating face at z = 0; the gear-head housing spigot and bolt "
-            "pattern are not in the seed tables, so no spigot or holes are generated there",
+            *(self.face.notes() if self.face is not None else [NOT_FOR_MANUFACTURE]),
             f"thickness {self.thickness:g} mm = max(wall_mm, pilot depth + {MIN_FLOOR_MM:g}, "
             f"drill depth + {MIN_FLOOR_MM:g})",
         ]

@@ -45,6 +45,11 @@ def screw_length_mm(thread: str, grip_mm: float, tapped_depth_mm: float,
     return next((float(l) for l in ISO_4762_LENGTHS_MM if low <= l <= high), None)
 
 
+def _next_length(least_mm: float) -> float | None:
+    """The shortest ISO 4762 preferred length of at least ``least_mm``."""
+    return next((float(l) for l in ISO_4762_LENGTHS_MM if l >= least_mm), None)
+
+
 def _engagement(thread: str, min_engagement_mm: float | None) -> float:
     if min_engagement_mm is not None:
         return min_engagement_mm
@@ -79,7 +84,17 @@ def screw_rows(part_name: str, circles: list[dict], joints: dict[str, dict],
         m_min = _engagement(c["thread"], joint.get("details", {}).get("criteria", {})
                             .get("engagement", {}).get("limit"))
         ma = f"; tighten to M_A = {torque:.1f} N·m (VDI 2230, µ = 0.12)" if torque else ""
-        if c["kind"] == "clearance" and c.get("grip_mm") is not None:
+        if c["kind"] == "clearance" and c.get("grip_mm") is not None and c["depth_mm"] is None:
+            # into a part hdcad does not make (the gear head): its tapped depth is unknown
+            low = c["grip_mm"] + m_min
+            size = f"{c['thread']}×{_next_length(low):g}" if _next_length(low) else \
+                f"{c['thread']}×L"
+            rows.append(BomRow("screws", screw_designation(size, bolt_class), str(c["count"]),
+                               part_name, f"{c['name']} on Ø{c['diameter_mm']:g}; grip "
+                               f"{c['grip_mm']:.1f} mm + {m_min:g} mm engagement: the shortest "
+                               "ISO 4762 length; check it against the tapped depth of the "
+                               f"mating part (not in the catalog){ma}"))
+        elif c["kind"] == "clearance" and c.get("grip_mm") is not None:
             length = screw_length_mm(c["thread"], c["grip_mm"], c["depth_mm"] or 0.0, m_min)
             size = f"{c['thread']}×{length:g}" if length else f"{c['thread']}×?"
             hint = "" if length else "; " + _no_length_hint(c["thread"], c["grip_mm"], m_min)

@@ -1,0 +1,141 @@
+"""The gear-head side of a GH motor flange: pilot, screws and O-ring from an overlay table.
+
+Seed 003 gives only the motor side of each flange code; the gear-head housing face the flange
+bolts onto (pilot, bolt circle, screws, outline) is in the lost figures 053-1 … 064-1 and the
+maker's delivery drawings. It comes from the overlay table ``gh_input_interface`` (keyed by
+series and size); without it the flange is written with a flat gear-head face and marked
+NOT FOR MANUFACTURE. The pilot fit is H7/g6 (ISO 286), the screws are ISO 4762 in ISO 273
+medium clearance holes with DIN 974-1 counterbores from the motor face, the O-ring sits in a
+face gland (ISO 3601-2 proportions: depth 0.75·d2, width 1.4·d2).
+
+References
+----------
+HOUSING_RULES §5 (1) and §4; seed 000 table 028-1 (p.028: O-ring on the input-side flange
+face); ISO 286-1/-2, ISO 273, ISO 4762, DIN 974-1, ISO 3601-2.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from ..catalog import Catalog
+from .part import BoltCircle, Fit
+from .primitives import cylinder, ring_points
+from .standards import DIN_974_1_CBORE_MM, ISO_273_MEDIUM_MM, ISO_4762_HEAD_MM, thread_diameter
+
+TABLE = "gh_input_interface"
+CBORE_SINK_MM = 0.5          # head below the motor face (DIN 974-1: depth k + 0.5)
+GLAND_DEPTH, GLAND_WIDTH = 0.75, 1.4   # × d2, ISO 3601-2 face gland proportions
+NOT_FOR_MANUFACTURE = ("NOT FOR MANUFACTURE: the gear-head housing face (pilot, bolt circle, "
+                       "screws) is not in the seeds (lost figures 053-1 … 064-1); add the "
+                       "overlay table gh_input_interface for this series and size")
+
+
+@dataclass(frozen=True)
+class GearHeadFace:
+    """The gear-head housing face from ``gh_input_interface`` (one row)."""
+
+    row: dict
+
+    @property
+    def spigot(self) -> bool:
+        return self.row["pilot_kind"] == "spigot"
+
+    @property
+    def clearance_mm(self) -> float:
+        return self.row.get("clearance_hole_mm") or ISO_273_MEDIUM_MM[self.row["bolt_thread"]]
+
+    @property
+    def counterbore(self) -> tuple[float, float]:
+        """(Ø, depth) of the DIN 974-1 counterbore for the ISO 4762 head."""
+        thread = self.row["bolt_thread"]
+        return DIN_974_1_CBORE_MM[thread], ISO_4762_HEAD_MM[thread][1] + CBORE_SINK_MM
+
+    def least_thickness_mm(self, floor_mm: float) -> float:
+        """Plate thickness that leaves ``floor_mm`` under the counterbore (and the recess)."""
+        recess = 0.0 if self.spigot else self.row["pilot_depth_mm"]
+        return self.counterbore[1] + max(floor_mm, thread_diameter(self.row["bolt_thread"]) / 2) \
+            + recess
+
+    def solids(self, thickness: float, bore: float) -> tuple[list, list]:
+        """(bodies to add, bodies to cut) on a plate from z = 0 (gear-head face) to
+        z = thickness (motor face)."""
+        r = self.row
+        add, cut = [], []
+        if self.spigot:
+            add.append(cylinder(r["pilot_diameter_mm"], -r["pilot_depth_mm"], 0.0))
+            cut.append(cylinder(bore, -r["pilot_depth_mm"] - 1, 1.0))
+        else:
+            cut.append(cylinder(r["pilot_diameter_mm"], -1.0, r["pilot_depth_mm"]))
+        cb_d, cb_depth = self.counterbore
+        low = -r["pilot_depth_mm"] - 1 if self.spigot else -1.0
+        for x, y in ring_points(r["bolt_circle_mm"], r["bolt_count"],
+                                r.get("bolt_start_angle_deg") or 0.0):
+            cut.append(cylinder(self.clearance_mm, low, thickness + 1, x, y))
+            cut.append(cylinder(cb_d, thickness - cb_depth, thickness + 1, x, y))
+        gland = self.oring()
+        if gland:
+            d1, d2 = gland
+            inner = d1 if self.spigot else max(d1, r["pilot_diameter_mm"])
+            ring = cylinder(inner + 2 * GLAND_WIDTH * d2, -1.0, GLAND_DEPTH * d2).cut(
+                cylinder(inner, -2.0, GLAND_DEPTH * d2 + 1))
+            cut.append(ring)
+        return add, cut
+
+    def oring(self) -> tuple[float, float] | None:
+        text = self.row.get("oring_d1_d2_mm")
+        if not text:
+            return None
+        d1, d2 = (float(v) for v in str(text).lower().replace("×", "x").split("x"))
+        return d1, d2
+
+    def bolt_circle(self, thickness: float, bore: float, outer: float | None,
+                    square: float | None) -> BoltCircle:
+        r = self.row
+        inner = bore if self.spigot else r["pilot_diameter_mm"]
+        return BoltCircle("gear-head screws", r["bolt_circle_mm"], r["bolt_count"],
+                          self.clearance_mm, r["bolt_thread"], "clearance", None,
+                          annulus_inner_mm=inner, annulus_outer_mm=outer,
+                          outline_square_mm=square, grip_mm=thickness - self.counterbore[1],
+                          start_angle_deg=r.get("bolt_start_angle_deg") or 0.0)
+
+    def notes(self) -> list[str]:
+        r = self.row
+        kind = "spigot into the gear head" if self.spigot else "recess over the gear-head spigot"
+        text = [f"gear-head side from overlay table {TABLE} ({r.get('source') or 'overlay'}): "
+                f"pilot Ø{r['pilot_diameter_mm']:g} {self.pilot_fit()} ({kind}, "
+                f"{r['pilot_depth_mm']:g} mm), {r['bolt_count']} × {r['bolt_thread']} ISO 4762 "
+                f"on Ø{r['bolt_circle_mm']:g} in Ø{self.clearance_mm:g} holes, counterbored "
+                f"Ø{self.counterbore[0]:g} × {self.counterbore[1]:g} from the motor face "
+                "(fit the flange to the gear head before the motor)"]
+        gland = self.oring()
+        text.append(f"O-ring {gland[0]:g} × {gland[1]:g} in a face gland (depth "
+                    f"{GLAND_DEPTH * gland[1]:.2f}, width {GLAND_WIDTH * gland[1]:.2f}; seed 000 "
+                    "table 028-1)" if gland else
+                    f"no O-ring size in {TABLE}: seal the face with {r.get('sealant') or 'a liquid gasket'} "
+                    "(seed 000 table 028-1 asks for a seal on the input-side flange face)")
+        return text
+
+    def pilot_fit(self) -> str:
+        return self.row.get("pilot_fit") or ("g6" if self.spigot else "H7")
+
+
+def gear_head_face(catalog: Catalog, series: str, size: int) -> GearHeadFace | None:
+    row = catalog.find(TABLE, series=series, size=size) if catalog.has(TABLE) else None
+    return None if row is None else GearHeadFace(row)
+
+
+def iso286_fit(catalog: Catalog, feature: str, nominal_mm: float, code: str, mate: str,
+               reason: str) -> Fit:
+    """A Fit with its ISO 286 deviations [µm] for H7 (hole) or g6 (shaft)."""
+    row = next(r for r in catalog.rows("iso286_h7_g6")
+               if r["over_mm"] < nominal_mm <= r["upto_mm"])
+    if code == "H7":
+        deviations, kind = (row["IT7_um"], 0.0), "hole"
+    elif code == "g6":
+        es = -row["g_es_below_zero_um"]  # stored as a magnitude: g lies below the zero line
+        deviations, kind = (es, es - row["IT6_um"]), "shaft"
+    else:
+        raise ValueError(f"fit {code!r}: only H7 and g6 are tabulated (iso286_h7_g6.csv)")
+    return Fit(feature, nominal_mm, code, kind, deviations, mate, reason,
+               catalog.table("iso286_h7_g6").source)

@@ -1,0 +1,62 @@
+"""The gear-head side of the GH motor flange: from the overlay table gh_input_interface, or
+marked NOT FOR MANUFACTURE (the seeds give only the motor side; HOUSING_RULES §5 (1))."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import pytest
+
+cq = pytest.importorskip("cadquery")
+
+from hdcad.catalog import load_catalog  # noqa: E402
+from hdcad.design_options import DesignOptions  # noqa: E402
+from hdcad.geometry.build import build_parts  # noqa: E402
+from hdcad.geometry.part import export_step  # noqa: E402
+from hdcad.models import resolve  # noqa: E402
+
+OVERLAY = Path(__file__).parent / "data" / "overlay_gh_interface_TEST_DATA_NOT_CATALOG.yaml"
+
+
+def _cylinders(shape):
+    """(radius, distance of the axis from Z) of every cylindrical face [mm]."""
+    out = []
+    for face in shape.Faces():
+        if face.geomType() == "CYLINDER":
+            cyl = face._geomAdaptor().Cylinder()
+            loc = cyl.Location()
+            out.append((round(cyl.Radius(), 3), round(math.hypot(loc.X(), loc.Y()), 3)))
+    return out
+
+
+def test_without_the_interface_the_flange_is_not_for_manufacture(catalog):
+    part = build_parts(resolve("CSF-45-120-GH", catalog), catalog, DesignOptions())[0]
+    assert any("NOT FOR MANUFACTURE" in n for n in part.notes)
+    assert [c.name for c in part.bolt_circles] == ["motor screws"]
+    # seed 003 table 064-1 PA: motor pilot Ø70 H7; ISO 286: 50 < 70 ≤ 80 → IT7 = 30 µm
+    (pilot,) = part.fits
+    assert (pilot.nominal_mm, pilot.code, pilot.deviations_um) == (70, "H7", (30, 0))
+
+
+def test_the_interface_gives_recess_screws_and_o_ring(tmp_path):
+    catalog = load_catalog(OVERLAY)
+    part = build_parts(resolve("CSF-45-120-GH", catalog), catalog, DesignOptions())[0]
+    export_step(part, tmp_path / "flange.step")
+    shape = cq.importers.importStep(str(tmp_path / "flange.step")).val()
+    cylinders = _cylinders(shape)
+    assert (50.0, 0.0) in cylinders  # Ø100 recess over the gear-head spigot
+    holes = [c for c in cylinders if c == (4.5, 61.0)]  # 4 × Ø9 (ISO 273 medium M8) on Ø122
+    assert len(holes) == 4
+    assert (7.5, 61.0) in cylinders  # DIN 974-1 counterbore Ø15 for the M8 heads
+    d1, d2 = 104.37, 2.62  # face gland: inner Ø d1, width 1.4·d2
+    assert (round(d1 / 2, 3), 0.0) in cylinders and (round(d1 / 2 + 1.4 * d2, 3), 0.0) in cylinders
+    box = shape.BoundingBox()
+    assert box.zlen == pytest.approx(part.dimensions["thickness_mm"], abs=1e-3)
+    assert box.xlen == pytest.approx(146, abs=1e-3)  # the interface's outline
+    gh = next(c for c in part.bolt_circles if c.name == "gear-head screws")
+    assert gh.kind == "clearance" and gh.count == 4 and gh.grip_mm > 0
+    fits = {f.feature: f for f in part.fits}
+    # ISO 286: 80 < 100 ≤ 120 → IT7 = 35 µm
+    assert fits["gear-head pilot"].deviations_um == (35, 0)
+    assert not any("NOT FOR MANUFACTURE" in n for n in part.notes)
