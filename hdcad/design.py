@@ -116,7 +116,8 @@ def _export_parts(parts: list, stage: Path) -> list[str]:
     return files + ["assembly.step"]
 
 
-def _draw_parts(parts: list, stage: Path) -> list:
+def _draw_parts(parts: list, stage: Path, masses: dict[str, float] | None = None,
+                material: str = "") -> list:
     """A dimensioned drawing (SVG for the sheet, PNG beside the part) from each STEP file."""
     from .geometry.drawing import part_drawing
     from .report.context import Figure
@@ -124,7 +125,8 @@ def _draw_parts(parts: list, stage: Path) -> list:
     figures = []
     for part in parts:
         part_drawing(stage / f"{part.name}.step", part, stage / "drawings" / f"{part.name}.svg",
-                     stage / "drawings" / f"{part.name}.png")
+                     stage / "drawings" / f"{part.name}.png", (masses or {}).get(part.name),
+                     material)
         figures.append(Figure(part.name, f"drawings/{part.name}.svg",
                               f"front view and half section of {part.name}.step"))
     return figures
@@ -180,7 +182,7 @@ def run_design(model: GearModel, duty: Duty, options: DesignOptions, catalog: Ca
                        "parts": [_part_record(p, masses[p.name]) for p in parts]})
         bolts = side.submit(make_bolt_figures, result["parts"], stage)
         files = clock.lap("export", _export_parts(parts, stage))
-        drawings = clock.lap("drawings", _draw_parts(parts, stage))
+        drawings = clock.lap("drawings", _draw_parts(parts, stage, masses, options.material))
         sheet = side.submit(write_calc_sheet, stage, result, evaluation, catalog, drawings,
                             plots.result() + bolts.result()).result()
         clock.lap("calc sheet")

@@ -60,3 +60,16 @@ def test_the_interface_gives_recess_screws_and_o_ring(tmp_path):
     # ISO 286: 80 < 100 ≤ 120 → IT7 = 35 µm
     assert fits["gear-head pilot"].deviations_um == (35, 0)
     assert not any("NOT FOR MANUFACTURE" in n for n in part.notes)
+
+
+def test_the_drawing_states_tolerances_edges_material_mass_and_fits(tmp_path):
+    from hdcad.geometry.drawing import part_drawing
+    catalog = load_catalog(OVERLAY)
+    part = build_parts(resolve("CSF-45-120-GH", catalog), catalog, DesignOptions())[0]
+    export_step(part, tmp_path / "flange.step")
+    part_drawing(tmp_path / "flange.step", part, tmp_path / "flange.svg", None, 2.25, "steel")
+    svg = (tmp_path / "flange.svg").read_text(encoding="utf-8")
+    # matplotlib writes each text as a comment before its glyphs
+    for words in ("ISO 2768-mK", "ISO 13715", "material steel", "mass 2.25 kg",
+                  "Ø70 H7 (+0.030/+0.000)", "Ø100 H7 (+0.035/+0.000)"):
+        assert words in svg, words
