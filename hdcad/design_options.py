@@ -34,6 +34,7 @@ class DesignOptions:
     input_thrust_capacity_N: float | None = None  # axial capacity of the user's input support
     extra: dict = field(default_factory=dict)
     rules: dict = field(default_factory=dict)  # hdcad's own rules changed (checks/rules.py)
+    drive: dict = field(default_factory=dict)  # FD-0 drive flange: key | bolts | pins
     given: tuple[str, ...] = ()  # the options the design file set (the rest are defaults)
 
     @property
@@ -56,6 +57,12 @@ def parse_options(raw: Any) -> DesignOptions:
         return DesignOptions()
     checked = validated(DesignOptionsIn, raw, "")
     values = {k: getattr(checked, k) for k in checked.model_fields_set}
+    if values.get("drive") is not None:
+        drive = values["drive"]
+        if drive.kind in ("bolts", "pins") and drive.circle_mm is None:
+            from .errors import InputError
+            raise InputError("drive.circle_mm", f"required for drive kind {drive.kind}")
+        values["drive"] = drive.model_dump()
     if values.get("rules") is not None:
         values["rules"] = {k: getattr(values["rules"], k)
                            for k in values["rules"].model_fields_set}

@@ -40,6 +40,8 @@ PositiveHours = _num(0.0, 1e9, "h", strict_low=True)
 Force = _num(0.0, 1e9, "N")
 Length = _num(0.0, 1e3, "m")
 # the bounds of single fields, named so that annotations stay plain types
+DriveDiameterRange = _num(2.0, 30.0, "mm")
+DriveCircleRange = _num(5.0, 1000.0, "mm")
 WaveGeneratorRpmRange = _num(-1e5, 1e5, "r/min")
 RollerTorqueNmRange = _num(0.0, 1e7, "N·m")
 RollerCircumferenceMmRange = _num(0.0, 1e5, "mm", strict_low=True)
@@ -133,6 +135,15 @@ class RulesIn(_Strict):
     adjustment_efficiency: AdjustmentEfficiencyRange = 0.6
 
 
+class DriveIn(_Strict):
+    kind: Literal["none", "key", "bolts", "pins"] = "none"
+    count: Annotated[int, Field(ge=1, le=36, strict=True,
+                                description="a whole number from 1 to 36")] = 4
+    thread: Literal["M3", "M4", "M5", "M6", "M8", "M10", "M12"] = "M6"
+    diameter_mm: DriveDiameterRange = 6.0
+    circle_mm: DriveCircleRange | None = None
+
+
 class DesignOptionsIn(_Strict):
     motor_flange: Annotated[str, Field(min_length=1, max_length=8, strict=True,
                                        description="a flange code such as KG")] | None = None
@@ -146,6 +157,7 @@ class DesignOptionsIn(_Strict):
     running_gap_mm: RunningGapMmRange = 1.0
     input_thrust_capacity_N: InputThrustCapacityNRange | None = None
     rules: RulesIn | None = None
+    drive: DriveIn | None = None
 
 
 def validated(model: type[T], raw: Any, root: str = "") -> T:

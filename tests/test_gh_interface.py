@@ -20,14 +20,9 @@ OVERLAY = Path(__file__).parent / "data" / "overlay_gh_interface_TEST_DATA_NOT_C
 
 
 def _cylinders(shape):
-    """(radius, distance of the axis from Z) of every cylindrical face [mm]."""
-    out = []
-    for face in shape.Faces():
-        if face.geomType() == "CYLINDER":
-            cyl = face._geomAdaptor().Cylinder()
-            loc = cyl.Location()
-            out.append((round(cyl.Radius(), 3), round(math.hypot(loc.X(), loc.Y()), 3)))
-    return out
+    """(radius, distance of the axis from Z) of every cylindrical face along Z [mm]."""
+    from hdcad.geometry.drawing.measure import z_cylinders
+    return [(round(c.diameter / 2, 3), round(math.hypot(c.x, c.y), 3)) for c in z_cylinders(shape)]
 
 
 def test_without_the_interface_the_flange_is_not_for_manufacture(catalog):

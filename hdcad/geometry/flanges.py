@@ -18,6 +18,7 @@ import cadquery as cq
 
 from ..catalog import Catalog
 from ..design_options import DesignOptions
+from .drive_feature import drive_feature
 from .gh_interface import NOT_FOR_MANUFACTURE, gear_head_face, iso286_fit
 from .part import BoltCircle, Part
 from .primitives import cylinder, ring_points, single_solid
@@ -94,7 +95,7 @@ class FDDriveFlange:
         missing = _missing(row, self.NEEDED)
         if missing:
             raise ValueError(f"FD-0 size {size}: table 311-1 row lacks {', '.join(missing)}")
-        self.size, self.row, self.options = size, row, options
+        self.size, self.row, self.options, self.catalog = size, row, options, catalog
         self.label = f"FD-{size}-0 drive flange"
         self._dimension()
         self._check()
@@ -132,9 +133,11 @@ class FDDriveFlange:
         for x, y in ring_points(self.ring, self.count, 0.0):
             cutters += [cylinder(self.hole, -1, t + 1, x, y),
                         cylinder(self.cbore, t - self.cbore_depth, t + 1, x, y)]
-        return Part(name="drive_flange", shape=single_solid(body, cutters, self.label),
+        extra, circles, notes = drive_feature(self.options.drive, self.pilot, self.bore, t,
+                                              top, self.catalog)
+        return Part(name="drive_flange", shape=single_solid(body, cutters + extra, self.label),
                     color=DRIVE_FLANGE_COLOR, dimensions=self._dimensions(),
-                    bolt_circles=[self._bolt_circle()], notes=self._notes())
+                    bolt_circles=[self._bolt_circle()] + circles, notes=self._notes() + notes)
 
     def _bolt_circle(self) -> BoltCircle:
         # depth = thread engagement the casing offers (311-1 M = thread × depth)
@@ -169,7 +172,7 @@ class FDDriveFlange:
             f"(k + {CBORE_SINK_MM:g} mm), from the far face; hole angular position 0° "
             "(clock it to the casing's tapped holes)",
             f"gear/pulley pilot hub Ø{self.pilot:g} × {self.hub_length:g} (= wall_mm): design "
-            "choice; the user's gear is centred on it and fastened by the user",
+            "choice; the user's gear is centred on it",
         ]
         if self.thickness > self.options.wall_mm:
             notes.append(f"plate thickened from wall_mm {self.options.wall_mm:g} to "
