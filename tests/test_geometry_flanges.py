@@ -7,7 +7,6 @@ import cadquery as cq
 import pytest
 import yaml
 from OCP.BRep import BRep_Tool
-from OCP.BRepAdaptor import BRepAdaptor_Surface
 
 from hdcad.catalog import load_catalog
 from hdcad.design_options import DesignOptions
@@ -31,14 +30,8 @@ def reimported(part, tmp_path) -> cq.Workplane:
 
 def cylinders(shape: cq.Shape) -> list[tuple[float, float, float, float]]:
     """(radius, x, y, |axis·Z|) of every cylindrical face."""
-    out = []
-    for face in shape.Faces():
-        if face.geomType() != "CYLINDER":
-            continue
-        cyl = BRepAdaptor_Surface(face.wrapped).Cylinder()
-        loc, axis = cyl.Axis().Location(), cyl.Axis().Direction()
-        out.append((cyl.Radius(), loc.X(), loc.Y(), abs(axis.Z())))
-    return out
+    from hdcad.geometry.drawing.measure import cylinder_faces
+    return [(r, x, y, z) for _, r, (x, y), z in cylinder_faces(shape)]
 
 
 def single_closed_solid(wp: cq.Workplane) -> cq.Solid:

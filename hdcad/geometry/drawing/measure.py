@@ -66,17 +66,25 @@ class Cylinder:
         return math.hypot(self.x, self.y) < TOLERANCE_MM
 
 
-def z_cylinders(shape: cq.Shape) -> list[Cylinder]:
-    """Every cylindrical face of ``shape`` whose axis is parallel to Z."""
+def cylinder_faces(shape: cq.Shape) -> list[tuple]:
+    """(face, radius, axis location (x, y), |axis · Z|) of every cylindrical face [mm]."""
     out = []
     for face in shape.Faces():
         if face.geomType() != "CYLINDER":
             continue
         cyl = BRepAdaptor_Surface(face.wrapped).Cylinder()
         loc, axis = cyl.Axis().Location(), cyl.Axis().Direction()
-        if abs(abs(axis.Z()) - 1) < 1e-9:
+        out.append((face, cyl.Radius(), (loc.X(), loc.Y()), abs(axis.Z())))
+    return out
+
+
+def z_cylinders(shape: cq.Shape) -> list[Cylinder]:
+    """Every cylindrical face of ``shape`` whose axis is parallel to Z."""
+    out = []
+    for face, radius, (x, y), along_z in cylinder_faces(shape):
+        if abs(along_z - 1) < 1e-9:
             box = face.BoundingBox()
-            out.append(Cylinder(2 * cyl.Radius(), loc.X(), loc.Y(), box.zmin, box.zmax))
+            out.append(Cylinder(2 * radius, x, y, box.zmin, box.zmax))
     return out
 
 
