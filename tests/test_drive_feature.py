@@ -60,3 +60,19 @@ def test_a_circle_outside_the_hub_is_refused_with_the_range(catalog):
     with pytest.raises(ValueError, match=r"circle_mm 90 must lie in \["):
         FDDriveFlange(25, catalog, parse_options(
             {"drive": {"kind": "pins", "count": 2, "diameter_mm": 6, "circle_mm": 90}})).build()
+
+
+def test_outer_edges_are_broken(catalog, monkeypatch):
+    # 0.5 × 45° on both outer circular edges of the Ø95 FD-25-0 flange: two rings of
+    # triangular section 0.5²/2 at the centroid radius R − 0.5/3 (Pappus)
+    from hdcad.geometry import flanges
+    from hdcad.geometry.primitives import EDGE_BREAK_MM
+    broken = FDDriveFlange(25, catalog).build()
+    monkeypatch.setattr(flanges, "break_outer_edges", lambda shape, *a, **k: shape)
+    sharp = FDDriveFlange(25, catalog).build()
+    c, r = EDGE_BREAK_MM, 95 / 2
+    ring = 2 * (c * c / 2) * 2 * math.pi * (r - c / 3)
+    removed = sharp.shape.val().Volume() - broken.shape.val().Volume()
+    assert removed == pytest.approx(ring, rel=1e-6)
+    assert sum(f.geomType() == "CONE" for f in broken.shape.val().Faces()) == 2
+    assert any("ISO 13715" in n for n in broken.notes)

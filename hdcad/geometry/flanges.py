@@ -21,7 +21,7 @@ from ..design_options import DesignOptions
 from .drive_feature import drive_feature
 from .gh_interface import NOT_FOR_MANUFACTURE, gear_head_face, iso286_fit
 from .part import BoltCircle, Part
-from .primitives import cylinder, ring_points, single_solid
+from .primitives import EDGE_BREAK_MM, break_outer_edges, cylinder, ring_points, single_solid
 from .standards import (DIN_974_1_CBORE_MM, ISO_261_PITCH_MM, ISO_273_MEDIUM_MM, ISO_4762_HEAD_MM,
                         TAP_DRILL_MM, thread_diameter)
 
@@ -40,6 +40,8 @@ MOTOR_HOLE_COUNT = 4         # not in the seed tables; IEC 60072-1 FF/FT flanges
 MOTOR_HOLE_START_DEG = 45.0  # holes on the diagonals, where a square flange has room
 DRIVE_FLANGE_COLOR = (0.80, 0.62, 0.30)
 MOTOR_FLANGE_COLOR = (0.62, 0.66, 0.72)
+EDGE_NOTE = (f"outer edges broken {EDGE_BREAK_MM:g} × 45° (ISO 13715); other edges -0.3/+0.3 "
+             "per the drawing's edge note")
 
 
 def check_ring(label: str, ring_d: float, count: int, hole_d: float, inner_d: float,
@@ -135,9 +137,11 @@ class FDDriveFlange:
                         cylinder(self.cbore, t - self.cbore_depth, t + 1, x, y)]
         extra, circles, notes = drive_feature(self.options.drive, self.pilot, self.bore, t,
                                               top, self.catalog)
-        return Part(name="drive_flange", shape=single_solid(body, cutters + extra, self.label),
+        shape = break_outer_edges(single_solid(body, cutters + extra, self.label), self.outer)
+        return Part(name="drive_flange", shape=shape,
                     color=DRIVE_FLANGE_COLOR, dimensions=self._dimensions(),
-                    bolt_circles=[self._bolt_circle()] + circles, notes=self._notes() + notes)
+                    bolt_circles=[self._bolt_circle()] + circles,
+                    notes=self._notes() + notes + [EDGE_NOTE])
 
     def _bolt_circle(self) -> BoltCircle:
         # depth = thread engagement the casing offers (311-1 M = thread × depth)
@@ -309,9 +313,12 @@ class GHMotorFlange:
             body = body.fuse(*add) if add else body
             cutters += cut
             circles.append(self.face.bolt_circle(t, self.bore, self.outer, self.square))
-        return Part(name="motor_flange", shape=single_solid(body, cutters, self.label),
+        shape = break_outer_edges(single_solid(body, cutters, self.label), self.outer,
+                                  self.square)
+        return Part(name="motor_flange", shape=shape,
                     color=MOTOR_FLANGE_COLOR, dimensions=self._dimensions(),
-                    bolt_circles=circles, notes=self._notes(), fits=self._fits())
+                    bolt_circles=circles, notes=self._notes() + [EDGE_NOTE],
+                    fits=self._fits())
 
     def _fits(self) -> list:
         fits = [iso286_fit(self.catalog, "motor pilot", self.pilot, "H7",

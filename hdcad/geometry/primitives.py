@@ -28,3 +28,30 @@ def single_solid(body: cq.Shape, cutters: list[cq.Shape], label: str) -> cq.Work
     if len(solids) != 1:
         raise ValueError(f"{label}: the cut left {len(solids)} solids instead of one")
     return cq.Workplane("XY").add(solids[0])
+
+
+# ISO 13715 edge break on outer edges: 0.5 × 45° (HOUSING_RULES §4), a design choice
+EDGE_BREAK_MM = 0.5
+
+
+def break_outer_edges(part: cq.Workplane, outer_d: float | None = None,
+                      square: float | None = None, size: float = EDGE_BREAK_MM
+                      ) -> cq.Workplane:
+    """Chamfer ``size`` × 45° on the edges of the outer outline (round Ø ``outer_d`` or
+    square ``square`` centred on Z): the sharp outer corners a machinist breaks anyway."""
+    def on_outline(edge) -> bool:
+        for t in (0.0, 0.5, 1.0):
+            p = edge.positionAt(t)
+            if square is not None:
+                dist = max(abs(p.x), abs(p.y)) - square / 2
+            else:
+                dist = math.hypot(p.x, p.y) - outer_d / 2
+            if abs(dist) > 1e-6:
+                return False
+        return True
+
+    solid = part.val()
+    edges = [e for e in solid.Edges() if on_outline(e)]
+    if not edges:
+        return part
+    return cq.Workplane("XY").add(solid.chamfer(size, None, edges))
