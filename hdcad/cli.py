@@ -223,6 +223,16 @@ def print_reconciliation(result) -> None:
     gain = 1 - result.rmse_after / result.rmse_before if result.rmse_before else 0.0
     print(f"missing effects: {', '.join(result.missing_effects) or 'none'}; RMSE "
           f"{fmt(result.rmse_before)} → {fmt(result.rmse_after)} {u} ({gain:.0%} less)")
+    for m in result.measurement_effects:  # the rig, not the gear
+        detail = m.get("reading") or ", ".join(
+            f"{k} = {fmt(v['value'])} {v['unit']}".rstrip() for k, v in m["params"].items())
+        print(f"  test rig: {m['effect']}: {detail}")
+    for n in result.nuisances:
+        print(f"  catalog scatter: {n['text']}")
+    for r in result.equivalent_readings:
+        print(f"  cannot tell apart: {r['text']}")
+    if result.outliers:
+        print(f"  {result.outliers} gross outlier(s) left out")
     for text in result.unexplained:
         print(f"  unexplained: {text}")
 

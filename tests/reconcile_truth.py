@@ -86,12 +86,8 @@ AR1_COEF_RANGE = (0.0, 0.8)       # coloured-noise AR(1) coefficient, from the t
 T0_FRACTION = (0.5, 1.0)          # T0 / rated torque (task brief; T0 ≤ rated torque)
 CYCLES = (2, 4)                   # full ±T0 cycles per record (task brief)
 TORSION_ROWS = (2000, 4000)
-# The catalog's printed θ1, θ2 differ from T1/K1, θ1 + (T2−T1)/K2 by their rounding (up
-# to ~3×10⁻⁵ rad); the seed formula (p.020 example) uses the printed θ and so steps at T1
-# and T2. A physical curve is continuous: the step is spread over a share of the segment
-# just below each break (the smallest of these that keeps the compliance positive), with
-# slopes K1, K2, K3 everywhere else.
-BRIDGE_FRACTIONS = (0.02, 0.05, 0.1)
+# The curve is built from the defining data T1, T2, K1, K2, K3 (seed 000 p.020); the
+# printed θ1, θ2 are their rounded results and are not used.
 TORQUE_GRID = 4001                # points of the compliance integration grid, 0…|T|max
 HYSTERESIS_SCALE = (0.5, 1.5)     # × catalog hysteresis loss ("about", seed 003 p.052/060)
 # Masing loop on a Ramberg–Osgood backbone (the formulation the generator uses):
@@ -243,25 +239,14 @@ def low_torque_stiffness(model: GearModel) -> float:
 def compliance_knots(model: GearModel) -> tuple[np.ndarray, np.ndarray]:
     """(torque breakpoints [N·m], compliance on each interval [rad/(N·m)]) for T ≥ 0.
 
-    FD: one spring (table 314-1). GH: slopes 1/K1, 1/K2, 1/K3 (052-1/060-1) with a bridge
-    of ``BRIDGE_FRACTIONS`` of each segment below T1 and T2 whose compliance makes the
-    integral pass through the printed θ1 and θ2.
+    FD: one spring (table 314-1). GH: slopes 1/K1, 1/K2, 1/K3 (052-1/060-1) changing at T1
+    and T2.
     """
     if model.is_fd:
         return np.array([0.0, math.inf]), np.array([1.0 / low_torque_stiffness(model)])
     t1, t2 = _value(model, "T1_Nm"), _value(model, "T2_Nm")
     k1, k2, k3 = (_value(model, f"K{i}_Nm_per_rad") for i in (1, 2, 3))
-    th1, th2 = _value(model, "theta1_rad"), _value(model, "theta2_rad")
-    for share in BRIDGE_FRACTIONS:
-        w1, w2 = share * t1, share * (t2 - t1)
-        bridge1 = (th1 - (t1 - w1) / k1) / w1
-        bridge2 = (th2 - th1 - (t2 - w2 - t1) / k2) / w2
-        if bridge1 > 0 and bridge2 > 0:
-            break
-    else:
-        raise ValueError(f"{model.code}: printed θ1/θ2 need a negative compliance bridge")
-    knots = np.array([0.0, t1 - w1, t1, t2 - w2, t2, math.inf])
-    return knots, np.array([1 / k1, bridge1, 1 / k2, bridge2, 1 / k3])
+    return np.array([0.0, t1, t2, math.inf]), np.array([1 / k1, 1 / k2, 1 / k3])
 
 
 def catalog_twist(torque, model: GearModel) -> np.ndarray:

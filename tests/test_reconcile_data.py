@@ -22,6 +22,7 @@ from hdcad.resources import examples_dir
 
 EXAMPLE = examples_dir() / "reconcile_torsion_synthetic.csv"
 JSON_KEYS = {"kind", "model", "disagreements", "missing_effects", "rmse_before", "rmse_after",
+             "measurement_effects", "nuisances", "equivalent_readings", "noise_rms", "outliers",
              "steps", "unexplained"}
 
 
@@ -164,12 +165,8 @@ def test_region_verdicts_read_before_and_after():
     assert region_verdict(False, False) == ""
 
 
-@pytest.mark.parametrize("column, factor, words", [
-    ("twist_rad", 180 / math.pi, "degrees instead of radians"),
-    ("torque_Nm", 1e-3, "kN·m"),
-])
-def test_data_in_wrong_units_is_bad_input_not_an_effect(tmp_path, capsys, column, factor,
-                                                        words):
+def scaled_example(tmp_path, column: str, factor: float):
+    """The shipped torsion example with one column multiplied by ``factor``."""
     import csv
     from hdcad.resources import examples_dir
     rows = list(csv.DictReader(open(examples_dir() / "reconcile_torsion_synthetic.csv")))
@@ -179,13 +176,37 @@ def test_data_in_wrong_units_is_bad_input_not_an_effect(tmp_path, capsys, column
         writer.writeheader()
         for r in rows:
             writer.writerow(dict(r, **{column: repr(float(r[column]) * factor)}))
+    return path
+
+
+@pytest.mark.parametrize("column, factor, words", [
+    ("twist_rad", 180 / math.pi, "degrees instead of radians"),
+    ("torque_Nm", 1e-3, "kN·m"),
+])
+def test_data_in_wrong_units_are_converted_and_named_as_the_rig(tmp_path, capsys, column,
+                                                                factor, words):
+    """A channel in the wrong unit is a measurement-chain finding, not a gear effect: the
+    channel is converted and the shipped example's hysteresis is still the only gear effect."""
+    path = scaled_example(tmp_path, column, factor)
+    out = tmp_path / "r.json"
+    code = main(["reconcile", "torsion", str(path), "--model", "CSF-32-100-GH", "--json",
+                 str(out)])
+    doc = json.loads(out.read_text(encoding="utf-8"))
+    assert code == 0 and doc["missing_effects"] == ["hysteresis"]
+    units = [m for m in doc["measurement_effects"] if m["effect"] == "wrong_units"]
+    assert len(units) == 1 and words in units[0]["reading"]
+    assert units[0]["factor"] == pytest.approx(1 / factor, rel=1e-12)
+
+
+def test_implausible_scale_without_a_unit_reading_is_bad_input(tmp_path, capsys):
+    path = scaled_example(tmp_path, "twist_rad", 12.0)
     code = main(["reconcile", "torsion", str(path), "--model", "CSF-32-100-GH"])
     err = capsys.readouterr().err
-    assert code == 2 and words in err and err.count("\n") == 1
+    assert code == 2 and "twist_rad" in err and err.count("\n") == 1
 
 
-def test_efficiency_as_a_fraction_is_bad_input():
-    from hdcad.reconcile.units import check_units
-    from types import SimpleNamespace
-    with pytest.raises(InputError, match="fraction"):
-        check_units("efficiency", SimpleNamespace(y=np.full(50, 0.82)))
+def test_efficiency_as_a_fraction_is_converted():
+    from hdcad.reconcile.units import find_fix
+    data = {"efficiency_pct": np.full(50, 0.82), "load_torque_Nm": np.full(50, 100.0)}
+    (fix,) = find_fix("efficiency", data, rated_torque=100.0)
+    assert fix.column == "efficiency_pct" and fix.factor == 100.0 and "fraction" in fix.reading

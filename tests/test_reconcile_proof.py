@@ -123,6 +123,7 @@ def test_third_harmonic_is_reported_unexplained():
 # ======================================================================================
 
 JSON_KEYS = {"kind", "model", "disagreements", "missing_effects", "rmse_before", "rmse_after",
+             "measurement_effects", "nuisances", "equivalent_readings", "noise_rms", "outliers",
              "steps", "unexplained"}
 
 
@@ -177,14 +178,16 @@ def test_truth_data_round_trips_through_csv(kind, tmp_path):
 # the truth simulator's own physics (independent of the library)
 # ======================================================================================
 
-def test_truth_catalog_curve_passes_printed_points_with_catalog_slopes():
-    """Twist through (T1, θ1), (T2, θ2) and slopes K1 near zero, K3 above T2 (052-1/060-1)."""
+def test_truth_catalog_curve_follows_the_defining_slopes():
+    """Twist T1/K1 at T1, T1/K1 + (T2 − T1)/K2 at T2, slopes K1 near zero and K3 above T2
+    (052-1/060-1); the printed θ1, θ2 agree to their rounding (3 significant digits)."""
     model = resolve("CSF-32-100-GH", truth.default_catalog())
     t1, t2 = model.get("T1_Nm").value, model.get("T2_Nm").value
+    k1, k2 = model.get("K1_Nm_per_rad").value, model.get("K2_Nm_per_rad").value
     theta = truth.catalog_twist(np.array([t1, t2, -t1]), model)
-    np.testing.assert_allclose(theta, [model.get("theta1_rad").value,
-                                       model.get("theta2_rad").value,
-                                       -model.get("theta1_rad").value], rtol=1e-6)
+    np.testing.assert_allclose(theta, [t1 / k1, t1 / k1 + (t2 - t1) / k2, -t1 / k1], rtol=1e-6)
+    np.testing.assert_allclose(theta[:2], [model.get("theta1_rad").value,
+                                           model.get("theta2_rad").value], rtol=0.03)
     d = 1e-3                                   # N·m: inside the segment
     slope1 = (truth.catalog_twist(np.array([0.5 * t1 + d]), model)
               - truth.catalog_twist(np.array([0.5 * t1]), model))[0] / d

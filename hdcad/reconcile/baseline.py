@@ -28,6 +28,7 @@ from ..checks.run import stiffness_curve
 from ..checks.stiffness import StiffnessCurve
 from ..errors import InputError
 from ..models import GearModel
+from .effects import Parameter
 
 # FD ratings depend on speed; the rated torque used for α = T/Tr is the 1450 r/min row
 # (table 310-1), the speed hdcad's catalog listing shows for FD models.
@@ -58,68 +59,16 @@ class Baseline:
     figures: dict[str, tuple[float, str]] = field(default_factory=dict)
     notes: list[str] = field(default_factory=list)
     inputs: dict[str, np.ndarray] = field(default_factory=dict)
+    curve: StiffnessCurve | None = None
 
-
-def twist_of(curve: StiffnessCurve, torque_Nm: np.ndarray) -> tuple[np.ndarray, list[str]]:
-    """Catalog twist θ [rad] at each torque T [N·m] (sign follows T), vectorised.
-
-    Slopes 1/K1, 1/K2, 1/K3 on the three segments, through the printed θ1 and θ2 where the
-    catalog prints them. The printed θ differ from T1/K1 and θ1 + (T2 − T1)/K2 by their
-    rounding (CSG-20-80-GH: θ2 printed 1.13×10⁻³ rad, 1.16×10⁻³ from K2), so the segment
-    formulas of seed 000 p.020 step at T1 and T2; a measured curve is continuous, so the step
-    is spread over a short share (BRIDGE_FRACTIONS) of the segment below each break. Where T2 or K3
-    is missing the K2 segment is extended beyond T1; where K2 is missing K1 is; the notes say
-    so.
-    """
-    t = np.abs(np.asarray(torque_Nm, dtype=float))
-    knots, twists, notes = _knots(curve, float(t.max()) if t.size else 0.0)
-    return np.sign(torque_Nm) * np.interp(t, knots, twists), notes
-
-
-# Shares of a segment, just below T1 and T2, over which the difference between the printed θ
-# and the segment slopes may be spread; the smallest that keeps the compliance positive on
-# both bridges is used (design choice, shared with the proof tests' truth simulator: keeps
-# the catalog slopes over ≥ 90 % of each segment; any width gives a continuous curve through
-# the printed points).
-BRIDGE_FRACTIONS = (0.02, 0.05, 0.10)
-
-
-def _knots(curve: StiffnessCurve, t_max: float) -> tuple[list[float], list[float], list[str]]:
-    """Torque and twist at the corners of the continuous piecewise-linear catalog curve."""
-    top = max(t_max, 1e-12) * 1.001
-    if curve.T1 is None or math.isinf(curve.T1) or curve.K2 is None:
-        notes = [] if curve.T1 is None or math.isinf(curve.T1) or top <= curve.T1 else \
-            ["K2 missing from the catalog: K1 used above T1"]
-        return [0.0, top], [0.0, top / curve.K1], notes
-    t1, notes = curve.T1, []
-    theta1 = curve.theta1 if curve.theta1 is not None else t1 / curve.K1
-    full = curve.T2 is not None and curve.K3 is not None
-    t2 = curve.T2 if full else None
-    theta2 = (curve.theta2 if curve.theta2 is not None else theta1 + (t2 - t1) / curve.K2) \
-        if full else None
-    for share in BRIDGE_FRACTIONS:
-        below1 = (1 - share) * t1
-        below2 = t2 - share * (t2 - t1) if full else None
-        ok = theta1 > below1 / curve.K1 and (not full or
-                                              theta2 > theta1 + (below2 - t1) / curve.K2)
-        if ok:
-            break
-    else:
-        notes.append("printed θ1/θ2 cannot be joined with positive compliance: the segment "
-                     "slopes are used as printed")
-    knots = [0.0, below1, t1]
-    twists = [0.0, below1 / curve.K1, theta1]
-    if full:
-        knots += [below2, t2]
-        twists += [theta1 + (below2 - t1) / curve.K2, theta2]
-        last, slope = (t2, theta2), curve.K3
-    else:
-        last, slope = (t1, theta1), curve.K2
-        if top > t1:
-            notes.append("T2/K3 missing from the catalog: the K2 segment is extended above T1")
-    knots.append(max(top, last[0] + 1.0))
-    twists.append(last[1] + (knots[-1] - last[0]) / slope)
-    return knots, twists, notes
+    def free_columns(self, theta: dict[str, float], rows=slice(None)) -> np.ndarray:
+        """The free columns on ``rows`` with the nuisance shape ``theta`` (torsion: the catalog
+        curve with corner width ``catalog.corner_width``)."""
+        if self.curve is None:
+            return self.free[rows]
+        torque = self.inputs["torque_Nm"][rows]
+        curve = catalog_twist(self.curve, torque, theta.get("catalog.corner_width", 0.0))
+        return np.column_stack([curve, np.ones(len(torque))])
 
 
 def _curve(model: GearModel, kind: str) -> tuple[StiffnessCurve, str]:
@@ -176,15 +125,71 @@ def _offset(n: int) -> np.ndarray:
     return np.ones((n, 1))
 
 
+def catalog_twist(curve: StiffnessCurve, torque_Nm: np.ndarray, width_Nm: float
+                  ) -> np.ndarray:
+    """Catalog twist θ [rad] at torque T [N·m] from the defining data K1, K2, K3, T1, T2.
+
+    The compliance steps from 1/K1 to 1/K2 at T1 and to 1/K3 at T2 (seed 000 p.020); a real
+    curve has no corners, so each step is a logistic of width w [N·m], integrated in closed
+    form with softplus: θ = t/K1 + (1/K2 − 1/K1)·w·[sp((t − T1)/w) − sp(−T1/w)] + (1/K3 −
+    1/K2)·w·[sp((t − T2)/w) − sp(−T2/w)], t = |T|, odd in T. w → 0 is the three-segment
+    curve. The printed θ1, θ2 are rounded results of these data and are not used. Where T2/K3
+    are missing the K2 segment continues; where T1/K2 are, K1 does.
+    """
+    t = np.abs(np.asarray(torque_Nm, dtype=float))
+    theta = t / curve.K1
+    w = max(float(width_Nm), 1e-9)
+    steps = []
+    if curve.T1 is not None and not math.isinf(curve.T1) and curve.K2 is not None:
+        steps.append((curve.T1, 1.0 / curve.K2 - 1.0 / curve.K1))
+        if curve.T2 is not None and curve.K3 is not None:
+            steps.append((curve.T2, 1.0 / curve.K3 - 1.0 / curve.K2))
+    for corner, jump in steps:
+        theta = theta + jump * w * (np.logaddexp(0.0, (t - corner) / w)
+                                    - np.logaddexp(0.0, -corner / w))
+    return np.sign(torque_Nm) * theta
+
+
+def _curve_notes(curve: StiffnessCurve) -> list[str]:
+    if curve.T1 is None or math.isinf(curve.T1) or curve.K2 is None:
+        return ["T1/K2 missing from the catalog: K1 used over the whole range"]
+    if curve.T2 is None or curve.K3 is None:
+        return ["T2/K3 missing from the catalog: the K2 segment is extended above T1"]
+    return []
+
+
+# Nonlinear nuisance parameters of each kind's baseline, fitted in every model.
+NUISANCE = {"torsion": (Parameter(
+    "corner_width", "N·m", "torque width over which the compliance changes at T1 and T2",
+    0.01, 1.0, "T1"),)}
+
+# The seeds call the stiffness table's values averages (seed 000 p.020) and state no spread;
+# ±10 % is assumed for the scatter of a real gear about them (printed with the result).
+STIFFNESS_SPREAD = 0.10
+
+
 def torsion(data: dict, model: GearModel, catalog: Catalog) -> Baseline:
-    """Twist [rad] = catalog curve(T) + zero offset (the only free parameter)."""
+    """Twist [rad] = s·θ_catalog(T; w) + offset.
+
+    The catalog's scatter is fitted, not treated as a missing effect: the compliance scale s
+    (1/s is the stiffness relative to the catalog) and the corner width w (a nonlinear
+    nuisance the fit adds, :data:`NUISANCE`) are free in every model.
+    """
     curve, source = _curve(model, "torsion")
     torque = data["torque_Nm"]
-    fixed, notes = twist_of(curve, torque)
     figures = catalog_figures(model, catalog)
     figures["K1_Nm_per_rad"] = (curve.K1, source)
-    return Baseline("torsion", data["twist_rad"], fixed, _offset(len(torque)), ("offset",),
-                    ("rad",), "rad", figures, notes, {"torque_Nm": torque})
+    figures["T1_Nm"] = (curve.T1 if curve.T1 and not math.isinf(curve.T1) else
+                        float(np.max(np.abs(torque))), source)
+    notes = _curve_notes(curve) + [
+        f"catalog stiffness scatter: ±{STIFFNESS_SPREAD:.0%} assumed (seed 000 p.020 gives "
+        "average values and no spread); a torque- or angle-sensor gain reads the same"]
+    n = len(torque)
+    free = np.column_stack([catalog_twist(curve, torque, 0.0), np.ones(n)])
+    base = Baseline("torsion", data["twist_rad"], np.zeros(n), free,
+                    ("compliance_scale", "offset"), ("-", "rad"), "rad", figures, notes,
+                    {"torque_Nm": torque}, curve)
+    return base
 
 
 def transmission(data: dict, model: GearModel, catalog: Catalog) -> Baseline:
@@ -192,10 +197,13 @@ def transmission(data: dict, model: GearModel, catalog: Catalog) -> Baseline:
     phi = data["input_angle_rad"]
     figures = catalog_figures(model, catalog)
     figures["ratio"] = (float(model.ratio), "model code")
-    notes = ["output turns in the same direction as the input (sign convention of the data)"]
-    return Baseline("transmission", data["output_angle_rad"], phi / model.ratio,
-                    _offset(len(phi)), ("offset",), ("rad",), "rad", figures, notes,
-                    {"wg_angle_rad": phi})
+    notes = ["output turns in the same direction as the input (sign convention of the data)",
+             "the ratio is exact (tooth counts): a slope error of the output angle is the "
+             "angle sensor's gain"]
+    free = np.column_stack([phi / model.ratio, np.ones(len(phi))])
+    return Baseline("transmission", data["output_angle_rad"], phi / model.ratio, free,
+                    ("scale_error", "offset"), ("-", "rad"), "rad", figures, notes,
+                    {"wg_angle_rad": phi, "output_angle_rad": phi / model.ratio})
 
 
 def efficiency(data: dict, model: GearModel, catalog: Catalog) -> Baseline:
@@ -243,8 +251,19 @@ def vibration(data: dict, model: GearModel, catalog: Catalog,
 
 def build(kind: str, data: dict, model: GearModel, catalog: Catalog,
           load_inertia_kgm2: float | None = None) -> Baseline:
-    """The :class:`Baseline` of ``kind`` for ``model``."""
+    """The :class:`Baseline` of ``kind`` for ``model``; rows are taken in time order
+    (``record_position`` runs from −1 at the first row to 1 at the last)."""
     if kind == "vibration":
-        return vibration(data, model, catalog, load_inertia_kgm2)
-    return {"torsion": torsion, "transmission": transmission,
-            "efficiency": efficiency}[kind](data, model, catalog)
+        base = vibration(data, model, catalog, load_inertia_kgm2)
+        base.inputs["output_angle_rad"] = base.inputs["wg_angle_rad"] / model.ratio
+    else:
+        base = {"torsion": torsion, "transmission": transmission,
+                "efficiency": efficiency}[kind](data, model, catalog)
+    base.inputs["record_position"] = np.linspace(-1.0, 1.0, len(base.y))
+    return base
+
+
+def catalog_curve(model: GearModel):
+    """θ(T) [rad] of the model's catalog curve (sharp corners), for the unit check."""
+    curve, _ = _curve(model, "torsion")
+    return lambda torque: catalog_twist(curve, torque, 0.0)

@@ -331,6 +331,9 @@ def _te(order: int, what: str) -> Effect:
             Parameter("phase", "rad", "phase p at φ = 0", -math.pi, math.pi, linear=True),
             Parameter("damping_ratio", "-", "damping ratio ζ of the joint (vibration only)",
                       0.002, 0.5),
+            Parameter("stiffness_scale", "-", "joint stiffness / catalog K1 (vibration only; "
+                      "the catalog's scatter, refitted with the resonance)", 0.5, 2.0,
+                      start=1.0),
         ),
         kinds=("transmission", "vibration"))
 

@@ -55,18 +55,50 @@ def lag_estimates(y: np.ndarray, max_lag: int = MAX_LAG) -> list[tuple[int, floa
     return out
 
 
+def _fourth_difference_variance(h: int, phi: float) -> float:
+    """Var of the lag-h fourth difference of unit-variance AR(1) noise with coefficient φ."""
+    r = lambda k: phi ** k
+    return 70.0 - 112.0 * r(h) + 56.0 * r(2 * h) - 16.0 * r(3 * h) + 2.0 * r(4 * h)
+
+
+def noise_model(y: np.ndarray) -> tuple[float, float]:
+    """(σ [unit of y], φ [-]) of AR(1) noise fitted to the lagged fourth differences.
+
+    s_h² = σ²·v(h, φ)/70 with v the variance of the fourth difference of AR(1) noise
+    (:func:`_fourth_difference_variance`), fitted in log s over the shortest lags 1, 2, 4, 8, 16
+    (where a smooth signal contributes least); the longest lag is dropped (twice at most) while it lies more
+    than ``CURVATURE_GROWTH`` − 1 above the fit (signal, not noise). White noise has φ = 0.
+    """
+    estimates = [(h, s) for h, s in lag_estimates(y, 16) if s > 0]
+    if len(estimates) < 2:
+        return float(np.std(y)), 0.0
+    grid = np.linspace(0.0, 0.95, 96)
+    for _ in range(3):
+        hs = np.array([h for h, _ in estimates])
+        logs = np.log([s for _, s in estimates])
+        best = None
+        for phi in grid:
+            shape = 0.5 * np.log([_fourth_difference_variance(int(h), phi) / 70.0 for h in hs])
+            level = float(np.mean(logs - shape))
+            err = float(np.sum((logs - shape - level) ** 2))
+            if best is None or err < best[0]:
+                best = (err, phi, level, shape)
+        _, phi, level, shape = best
+        if len(estimates) > 2 and logs[-1] - shape[-1] - level > math.log(CURVATURE_GROWTH):
+            estimates = estimates[:-1]
+            continue
+        break
+    return float(math.exp(level)), float(phi)
+
+
 def noise_rms(y: np.ndarray) -> float:
-    """Noise RMS [unit of y] of samples ``y`` in time order (see the module docstring)."""
-    estimates = [s for _, s in lag_estimates(y)]
-    if not estimates:
-        return float(np.std(y))
-    best = estimates[0]
-    for s0, s1 in zip(estimates, estimates[1:]):
-        growth = s1 / s0 if s0 > 0 else math.inf
-        if growth > CURVATURE_GROWTH:
-            break
-        best = max(best, s1)
-    return float(best)
+    """Noise RMS [unit of y] of samples ``y`` in time order (see :func:`noise_model`)."""
+    return noise_model(y)[0]
+
+
+def ar1_time(phi: float) -> float:
+    """Correlation time τ = (1 + φ)/(1 − φ) [samples] of AR(1) noise."""
+    return (1.0 + phi) / (1.0 - phi)
 
 
 def correlation_time(residual: np.ndarray, max_lag: int | None = None) -> float:

@@ -138,6 +138,12 @@ def report_context(result: Reconciliation, figures: list[dict]) -> dict:
                           for d in result.disagreements],
         "steps": steps, "rounds": rounds, "regions": regions,
         "unexplained": result.unexplained, "notes": result.notes, "figures": figures,
+        "rig": [{"effect": m["effect"], "detail": m.get("reading") or ", ".join(
+            f"{k} = {fmt(v['value'], v['unit'])}" for k, v in m["params"].items())}
+            for m in result.measurement_effects],
+        "nuisances": [n["text"] for n in result.nuisances],
+        "readings": [r["text"] for r in result.equivalent_readings],
+        "outliers": result.outliers,
     }
 
 

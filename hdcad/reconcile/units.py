@@ -1,65 +1,111 @@
-"""Plausibility of the measured data's units against the catalog model.
+"""Channels in the wrong unit: found before any fit, corrected and reported as a rig finding.
 
 A channel recorded in the wrong unit (degrees for radians, kN·m for N·m, efficiency as a
-fraction) scales the data by 57.3, 1000 or 0.01 against the catalog: no physical effect
-does that, so reconcile stops with a bad-input message naming the probable unit instead of
-fitting effects to it. The catalog's stiffness is an average (seed 000 p.020) and real gears
-scatter by tens of percent, hysteresis and play add to the twist at small torque: a factor
-beyond ``IMPLAUSIBLE`` (10) is taken as a unit error, never as a gear property.
+fraction) scales the data by 57.3, 1000 or 0.01 against the catalog: no physical effect does
+that. The catalog's stiffness is an average (seed 000 p.020) and real gears scatter by tens
+of percent, hysteresis and play add to the twist at small torque, so only a factor beyond
+``IMPLAUSIBLE`` (5) is taken as a unit error. When the factor is one of the usual unit
+mistakes the channel is converted and the finding reported (``wrong_units``, a
+measurement-chain effect); when it is not, reconcile stops with a bad-input message.
 
 References
 ----------
 Seed 000 p.020 (torsional stiffness, average values), p.021 (transmission error),
-p.023 (efficiency in %).
+p.023 (efficiency in %, load torque up to rated).
 """
 
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import numpy as np
 
 from ..errors import InputError
 
-IMPLAUSIBLE = 10.0  # data / catalog scale beyond which units, not the gear, are wrong
+IMPLAUSIBLE = 5.0  # data / catalog scale beyond which units, not the gear, are wrong
 DEG_PER_RAD = 180.0 / math.pi
-KNOWN = ((DEG_PER_RAD, "degrees instead of radians"), (1000.0, "the torque in kN·m instead "
-         "of N·m (or the angle in mrad)"), (1.0 / DEG_PER_RAD, "radians where degrees were "
-         "meant"))
+# A unit factor is accepted when the observed scale is within this factor of it: the
+# catalog scatter and the effects move the scale by tens of percent, never by 2×.
+MATCH = 2.0
+# Efficiency tests run up to about rated torque (seed 000 p.023): a largest load below this
+# share of the rated torque is a torque in kN·m.
+TINY_LOAD = 0.01
 
 
-def _scale_text(scale: float) -> str:
-    for factor, reading in KNOWN:
-        if factor / 2.5 <= scale <= factor * 2.5:
-            return f"probably {reading}"
-    return "probably wrong units"
+@dataclass(frozen=True)
+class UnitFix:
+    """A channel converted: ``data[column] *= factor``."""
+
+    column: str
+    factor: float
+    reading: str
+    observed_scale: float
+
+    def as_dict(self) -> dict:
+        return {"effect": "wrong_units", "column": self.column, "factor": self.factor,
+                "reading": self.reading, "observed_scale": self.observed_scale}
 
 
-def check_units(kind: str, base) -> None:
-    """InputError when the data are implausibly scaled against the catalog baseline."""
-    if kind == "torsion":
-        measured = base.y - np.mean(base.y)
-        catalog = base.fixed - np.mean(base.fixed)
-        _compare("twist_rad", _rms(measured), _rms(catalog), "the catalog twist at the "
-                                                             "recorded torques")
-    elif kind == "transmission":
-        x, y = base.inputs.get("wg_angle_rad"), base.y
-        if x is not None and np.ptp(x) > 0:
-            slope = np.polyfit(x, y, 1)[0]
-            expected = np.polyfit(x, base.fixed, 1)[0]
-            _compare("output_angle_rad", abs(slope), abs(expected), "input angle / ratio")
-    elif kind == "efficiency" and np.max(base.y) <= 1.0:
-        raise InputError("efficiency_pct", "every value is ≤ 1: probably a fraction; give "
-                                           "the efficiency in percent")
-
-
-def _compare(column: str, measured: float, catalog: float, what: str) -> None:
-    if measured <= 0 or catalog <= 0:
-        return
-    scale = measured / catalog
-    if scale > IMPLAUSIBLE or scale < 1.0 / IMPLAUSIBLE:
-        raise InputError(column, f"the data are {scale:.3g} × {what}: {_scale_text(scale)}")
+# (column, factor applied, reading, the scale it explains) per kind
+TORSION_FIXES = (("twist_rad", 1 / DEG_PER_RAD, "twist in degrees instead of radians",
+                  DEG_PER_RAD),
+                 ("torque_Nm", 1000.0, "torque in kN·m instead of N·m", 1000.0),
+                 ("twist_rad", 1e-3, "twist in mrad instead of rad", 1000.0))
 
 
 def _rms(values: np.ndarray) -> float:
     return float(np.sqrt(np.mean(np.square(values))))
+
+
+def torsion_scale(data: dict, twist_of) -> float:
+    """Measured twist / catalog twist at the recorded torques (RMS about the means)."""
+    catalog = twist_of(data["torque_Nm"])
+    measured = data["twist_rad"] - np.mean(data["twist_rad"])
+    expected = _rms(catalog - np.mean(catalog))
+    return _rms(measured) / expected if expected > 0 else 1.0
+
+
+def find_fix(kind: str, data: dict, twist_of=None, ratio: float | None = None,
+             rated_torque: float | None = None) -> list[UnitFix]:
+    """Unit fixes the data need (possibly several candidates for torsion, best first is
+    chosen by the caller); InputError when the data are implausibly scaled but no usual unit
+    mistake explains it."""
+    if kind == "torsion":
+        scale = torsion_scale(data, twist_of)
+        if 1 / IMPLAUSIBLE <= scale <= IMPLAUSIBLE:
+            return []
+        fixes = [UnitFix(c, f, r, scale) for c, f, r, s in TORSION_FIXES
+                 if s / MATCH <= scale <= s * MATCH]
+        if not fixes:
+            raise InputError("twist_rad", f"the data are {scale:.3g} × the catalog twist at "
+                                          "the recorded torques: probably wrong units")
+        return fixes
+    if kind == "transmission":
+        x, y = data["input_angle_rad"], data["output_angle_rad"]
+        if np.ptp(x) > 0:
+            scale = abs(np.polyfit(x, y, 1)[0]) * ratio
+            if DEG_PER_RAD / MATCH <= scale <= DEG_PER_RAD * MATCH:
+                return [UnitFix("output_angle_rad", 1 / DEG_PER_RAD,
+                                "output angle in degrees instead of radians", scale)]
+            if not 1 / IMPLAUSIBLE <= scale <= IMPLAUSIBLE:
+                raise InputError("output_angle_rad", f"the output turns {scale:.3g} × input "
+                                 "angle / ratio: probably wrong units or the wrong model")
+        return []
+    if kind == "efficiency":
+        fixes = []
+        if np.max(data["efficiency_pct"]) <= 1.0:
+            fixes.append(UnitFix("efficiency_pct", 100.0, "efficiency as a fraction instead "
+                                 "of percent", 0.01))
+        if rated_torque and np.max(np.abs(data["load_torque_Nm"])) < TINY_LOAD * rated_torque:
+            fixes.append(UnitFix("load_torque_Nm", 1000.0, "load torque in kN·m instead of "
+                                 "N·m", np.max(np.abs(data["load_torque_Nm"])) / rated_torque))
+        return fixes
+    return []
+
+
+def apply(data: dict, fixes: list[UnitFix]) -> dict:
+    out = dict(data)
+    for fix in fixes:
+        out[fix.column] = np.asarray(out[fix.column], dtype=float) * fix.factor
+    return out

@@ -1,0 +1,171 @@
+"""Score `hdcad reconcile` on independently written truth suites (``truths/truth_*.py``).
+
+Each suite was written from ``truths/CONTRACT.md`` and the physics literature without reading
+``hdcad/reconcile``; this script only runs it and compares what reconcile names with what the
+suite hid. Prints per suite and per kind the confusion matrix (rows: hidden gear effects or
+the category, columns: effects named) and the acceptance figures:
+
+- single: hidden effect named first;  pair: both named;
+- false alarm: a gear effect named on a clean or separable-decoy case;
+- wrong second name: a correctly named single effect followed by another name;
+- rmse_after / noise_rms on correctly named cases (share ≤ 1.2);  median gap shrink;
+- equivalent decoys: reported with both readings (the effect and the nuisance);
+- measurement effects named as such (rig findings) on separable decoys.
+
+Run: python benchmarks/bench_truth_suites.py [--suite truths/truth_b.py ...] [--per-cell 4]
+     [--seed 7] [--jobs 2] [--kind torsion] [--sindy]
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib.util
+import statistics
+import sys
+from collections import defaultdict
+from concurrent.futures import ProcessPoolExecutor
+from pathlib import Path
+
+import numpy as np
+
+ROOT = Path(__file__).resolve().parents[1]
+CATALOG_DIR = ROOT / "catalog"
+RMSE_FACTOR = 1.2
+
+
+def load_suite(path: Path):
+    spec = importlib.util.spec_from_file_location(path.stem, path)
+    module = importlib.util.module_from_spec(spec)
+    sys.modules[path.stem] = module
+    spec.loader.exec_module(module)
+    return module
+
+
+def reconcile_case(case) -> dict:
+    """Reconcile one truth case in-process; the JSON result plus the report's extra keys."""
+    from hdcad.catalog import load_catalog
+    from hdcad.models import resolve
+    from hdcad.reconcile import reconcile, validate_data
+
+    catalog = load_catalog()
+    try:
+        result = reconcile(case.kind, validate_data(case.kind, case.columns),
+                           resolve(case.model, catalog), catalog,
+                           load_inertia_kgm2=case.load_inertia_kgm2).as_dict()
+    except Exception as exc:  # a refusal (e.g. wrong units) is a result, not a crash
+        result = {"error": f"{type(exc).__name__}: {exc}", "missing_effects": [],
+                  "rmse_before": np.nan, "rmse_after": np.nan}
+    return result
+
+
+_CASES: dict = {}
+
+
+def _run(args):
+    suite_path, seed, per_cell, index = args
+    key = (suite_path, seed, per_cell)
+    if key not in _CASES:  # each worker generates the suite once
+        _CASES[key] = load_suite(Path(suite_path)).generate_cases(seed, CATALOG_DIR, per_cell)
+    return index, reconcile_case(_CASES[key][index])
+
+
+def score(case, result) -> dict:
+    named = list(result.get("missing_effects", []))
+    rig = [m["effect"] for m in result.get("measurement_effects", [])]
+    readings = {e for r in result.get("equivalent_readings", []) for e in r.get("effects", [])}
+    hidden = tuple(case.gear_effects)
+    out = {"named": named, "rig": rig, "category": case.category, "kind": case.kind,
+           "hidden": hidden, "error": result.get("error")}
+    before, after = result.get("rmse_before", np.nan), result.get("rmse_after", np.nan)
+    if case.category == "single":
+        out["first_right"] = bool(named) and named[0] == hidden[0]
+        out["wrong_second"] = out["first_right"] and len(named) > 1
+    if case.category == "pair":
+        out["both"] = set(hidden) <= set(named)
+    if case.category in ("clean", "decoy_separable"):
+        out["false_alarm"] = bool(named)
+    if case.category == "decoy_separable" and case.measurement_effects:
+        out["rig_right"] = set(case.measurement_effects) <= set(rig)
+    if case.category == "decoy_equivalent":
+        eq = set(case.equivalent_effects)
+        out["both_readings"] = bool(eq & (set(named) | readings)) and (
+            bool(readings) or not named)
+    if case.category in ("single", "pair") and set(hidden) <= set(named):
+        out["ratio"] = after / case.noise_rms if case.noise_rms else np.nan
+        out["shrink"] = 1 - after / before if before else np.nan
+    return out
+
+
+def _share(rows, key):
+    vals = [r[key] for r in rows if key in r]
+    return (sum(vals) / len(vals), len(vals)) if vals else (np.nan, 0)
+
+
+def summary(rows: list[dict], label: str) -> None:
+    def fmt(key, invert=False):
+        share, n = _share(rows, key)
+        return f"{share:6.1%} of {n:3d}" if n else "     -      "
+    ratios = [r["ratio"] for r in rows if "ratio" in r and np.isfinite(r["ratio"])]
+    shrinks = [r["shrink"] for r in rows if "shrink" in r and np.isfinite(r["shrink"])]
+    ok_ratio = sum(x <= RMSE_FACTOR for x in ratios) / len(ratios) if ratios else np.nan
+    print(f"{label:16s} single-first {fmt('first_right')} | pair-both {fmt('both')} | "
+          f"false-alarm {fmt('false_alarm')} | wrong-2nd {fmt('wrong_second')} | "
+          f"rig-named {fmt('rig_right')} | equiv-both {fmt('both_readings')} | "
+          f"rmse≤1.2σ {ok_ratio:6.1%} (median {statistics.median(ratios) if ratios else np.nan:.2f}) | "
+          f"shrink {statistics.median(shrinks) if shrinks else np.nan:6.1%}")
+
+
+def confusion(rows: list[dict], kind: str) -> None:
+    mine = [r for r in rows if r["kind"] == kind]
+    effects = sorted({e for r in mine for e in r["named"]} | {e for r in mine for e in r["hidden"]})
+    groups = defaultdict(list)
+    for r in mine:
+        groups["+".join(r["hidden"]) or f"({r['category']})"].append(r)
+    width = max([len(e) for e in effects] + [8]) + 1
+    print(f"\n  {kind}: rows = hidden, cells = cases naming the effect")
+    print(f"  {'hidden':34s}{'n':>4s}" + "".join(f"{e:>{width}s}" for e in effects)
+          + f"{'(none)':>{width}s}")
+    for key in sorted(groups):
+        g = groups[key]
+        cells = [sum(e in r["named"] for r in g) for e in effects] + [sum(not r["named"] for r in g)]
+        print(f"  {key:34s}{len(g):4d}" + "".join(f"{c:{width}d}" for c in cells))
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--suite", action="append", type=Path)
+    parser.add_argument("--seed", type=int, default=7)
+    parser.add_argument("--per-cell", type=int, default=4)
+    parser.add_argument("--jobs", type=int, default=2)
+    parser.add_argument("--kind", action="append")
+    parser.add_argument("--category", action="append")
+    parser.add_argument("--verbose", action="store_true", help="print every miss")
+    args = parser.parse_args()
+    suites = args.suite or sorted((ROOT / "truths").glob("truth_*.py"))
+    for path in suites:
+        cases = load_suite(path).generate_cases(args.seed, CATALOG_DIR, args.per_cell)
+        chosen = [i for i, c in enumerate(cases)
+                  if (not args.kind or c.kind in args.kind)
+                  and (not args.category or c.category in args.category)]
+        jobs = [(str(path), args.seed, args.per_cell, i) for i in chosen]
+        with ProcessPoolExecutor(args.jobs) as pool:
+            results = dict(pool.map(_run, jobs, chunksize=4))
+        rows = [score(cases[i], results[i]) for i in chosen]
+        print(f"\n=== suite {path.stem}: {len(rows)} cases, seed {args.seed} ===")
+        summary(rows, "all")
+        for kind in sorted({r["kind"] for r in rows}):
+            summary([r for r in rows if r["kind"] == kind], kind)
+        for kind in sorted({r["kind"] for r in rows}):
+            confusion(rows, kind)
+        if args.verbose:
+            for i, r in zip(chosen, rows):
+                bad = (r.get("first_right") is False or r.get("both") is False
+                       or r.get("false_alarm") or r.get("wrong_second") or r.get("error"))
+                if bad:
+                    c = cases[i]
+                    print(f"  MISS {c.name}: hidden {r['hidden']} rig {c.measurement_effects} "
+                          f"nuis {c.nuisance} → named {r['named']} rig {r['rig']} {r['error'] or ''}")
+
+
+if __name__ == "__main__":
+    main()

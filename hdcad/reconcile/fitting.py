@@ -1,0 +1,356 @@
+"""Fitting a model (the catalog baseline plus a set of effects) to one data set.
+
+A model is the baseline's free columns (nuisances of the catalog: offset, compliance scale,
+efficiency level), the columns of the measurement-chain effects (:mod:`.rig`) and those of
+the gear effects (:mod:`.effects`). Amplitudes enter linearly and are solved by linear least
+squares; shapes (widths, loop parameters, damping, the corner width of the catalog curve)
+are fitted by ``scipy.optimize.least_squares`` over the linear solution (variable
+projection), started from a grid and from the values of simpler models (multi-start).
+
+Rows flagged as gross outliers are left out of the fit (a hard-redescending robust loss).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+from scipy.optimize import least_squares, lsq_linear
+
+from . import baseline as baselines
+from . import effects as fx
+from . import rig
+
+# Above this many rows the fit uses this many rows drawn at random (fixed seed; time order
+# kept, torque turning points added) — even steps could alias an efficiency grid sweep;
+# the final prediction and the RMSE use every row.
+MAX_FIT_ROWS = 5_000
+GRID_POINTS = 6
+REGRID_POINTS = 4        # coarser grid when earlier effects are searched again
+CV_FOLDS = 5
+CV_CHUNKS = 25           # 5 contiguous chunks per fold, spread over the record
+# Catalog figures that scale effect bounds, and the kinds whose effects use them.
+FIGURE_KINDS = {"hysteresis_rad": ("torsion",), "backlash_rad": ("torsion",),
+                "accuracy_rad": ("transmission", "vibration")}
+# Shared nonlinear parameters: one value per model, whichever effect brings them.
+SHARED = ("damping_ratio", "stiffness_scale")
+
+
+@dataclass
+class Problem:
+    """One data set with its baseline and everything the effect columns need."""
+
+    kind: str
+    base: baselines.Baseline
+    scales: dict[str, float]
+    rows: np.ndarray
+    folds: np.ndarray
+    notes: list[str]
+    branches: tuple[np.ndarray, int] | None = None
+    fit_branches: tuple[np.ndarray, int] | None = None
+    outliers: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=int))
+    step_position: float = 0.0
+    cache: dict = field(default_factory=dict)
+
+    @property
+    def y(self) -> np.ndarray:
+        return self.base.y[self.rows] - self.base.fixed[self.rows]
+
+
+@dataclass
+class Fit:
+    effects: tuple[str, ...]
+    theta: dict[str, float]
+    beta: np.ndarray
+    labels: list[tuple[str, str]]   # (effect or 'baseline', linear parameter name)
+    prediction: np.ndarray          # on every row
+    rss: float                      # on the fit rows
+    n_params: int
+    cv_mse: float = math.nan
+    columns: np.ndarray | None = None   # design matrix on the fit rows
+
+    def residual(self, problem: Problem) -> np.ndarray:
+        """Residual on the fit rows."""
+        return problem.y - self.columns @ self.beta
+
+
+def _scales(base: baselines.Baseline, notes: list[str]) -> dict[str, float]:
+    """Scales of the effect bounds: catalog figures, else the range of the residual."""
+    scales = {"1": 1.0}
+    span = float(np.ptp(base.y - base.fixed)) or 1.0
+    for key, kinds in FIGURE_KINDS.items():
+        scales[key] = base.figures[key][0] if key in base.figures else span
+        if key not in base.figures and base.kind in kinds:
+            notes.append(f"{key.removesuffix('_rad')} not in the catalog for this model: "
+                         "effect bounds scaled by the range of the residual instead")
+    if "torque_Nm" in base.inputs:
+        scales["T0"] = float(np.max(np.abs(base.inputs["torque_Nm"])))
+    if "K1_Nm_per_rad" in base.figures:
+        scales["1/K1"] = 1.0 / base.figures["K1_Nm_per_rad"][0]
+    if "T1_Nm" in base.figures:
+        scales["T1"] = base.figures["T1_Nm"][0]
+    return scales
+
+
+def make_problem(kind: str, base: baselines.Baseline) -> Problem:
+    n = len(base.y)
+    rows = np.arange(n)
+    if n > MAX_FIT_ROWS:  # spread at random (fixed seed): even steps can alias a grid sweep
+        rows = np.sort(np.random.default_rng(0).choice(n, MAX_FIT_ROWS, replace=False))
+    branches = None
+    if kind == "torsion":
+        torque = base.inputs["torque_Nm"]
+        branches = fx.turning_points(torque, fx.TURN_FRACTION * np.ptp(torque))
+        # the turning points stay in the fitted rows: the hysteresis state of every later
+        # row depends on the torque reached there
+        rows = np.union1d(rows, branches[0])
+    if n > MAX_FIT_ROWS:
+        base.notes.append(f"{n} rows: fitted on {len(rows)} rows spread over the record, "
+                          "RMSE on every row")
+    notes = list(base.notes)
+    problem = Problem(kind, base, _scales(base, notes), rows, np.zeros(0), notes)
+    problem.branches = branches
+    set_rows(problem, rows)
+    return problem
+
+
+def set_rows(problem: Problem, rows: np.ndarray) -> None:
+    """Fit on ``rows``: contiguous cross-validation chunks and the torsion branch starts."""
+    problem.rows = rows
+    chunk = np.minimum((np.arange(len(rows)) * CV_CHUNKS) // len(rows), CV_CHUNKS - 1)
+    problem.folds = chunk % CV_FOLDS
+    if problem.branches is not None:
+        problem.fit_branches = (np.searchsorted(rows, problem.branches[0]),
+                                problem.branches[1])
+    problem.cache.clear()
+
+
+# --------------------------------------------------------------------------- columns
+def key_of(effect: str, param: str) -> str:
+    return param if param in SHARED else f"{effect}.{param}"
+
+
+def nonlinear(kind: str, effects: tuple[str, ...]) -> dict[str, fx.Parameter]:
+    """Nonlinear parameters of a model: the baseline's nuisances and the effects' shapes."""
+    out: dict[str, fx.Parameter] = {f"catalog.{p.name}": p
+                                    for p in baselines.NUISANCE.get(kind, ())}
+    for name in effects:
+        for p in parameters_of(name, kind):
+            out.setdefault(key_of(name, p.name), p)
+    return out
+
+
+def parameters_of(name: str, kind: str) -> tuple[fx.Parameter, ...]:
+    if name in rig.RIG_EFFECTS:
+        return ()
+    return fx.nonlinear_parameters(name, kind)
+
+
+def _harmonic(problem: Problem, order: int, theta: dict, full: bool) -> np.ndarray:
+    """sin/cos of k·φ (transmission: times 1, u, u² of the record position, a slowly varying
+    amplitude and phase), or the joint's response to them (vibration)."""
+    zeta = theta.get("damping_ratio")
+    scale = theta.get("stiffness_scale", 1.0)
+    key = (order, zeta, scale, full)
+    if key not in problem.cache:
+        inp = problem.base.inputs
+        phi = inp["wg_angle_rad"]
+        basis = [np.sin(order * phi), np.cos(order * phi)]
+        if zeta is not None:  # the joint's response needs the whole time history
+            k = float(inp["K_Nm_per_rad"]) * scale
+            cols = np.column_stack([fx.joint_response(inp["time_s"], c, k,
+                                                      float(inp["J_kgm2"]), zeta)
+                                    for c in basis])
+        else:
+            u = inp["record_position"]
+            cols = np.column_stack(basis + [c * u for c in basis]
+                                   + [c * (1.5 * u * u - 0.5) for c in basis])
+        cols = cols if full else cols[problem.rows]
+        if len(problem.cache) > 64:
+            problem.cache.clear()
+        problem.cache[key] = cols
+    return problem.cache[key]
+
+
+TE_LABELS = ("sin", "cos", "sin_u1", "cos_u1", "sin_u2", "cos_u2")
+
+
+def columns(problem: Problem, effects: tuple[str, ...], theta: dict[str, float],
+            full: bool = False):
+    """Design matrix, labels and linear bounds for a model with ``effects``, on every row
+    (``full``) or on the fitted rows."""
+    base = problem.base
+    rows = slice(None) if full else problem.rows
+    inp = {k: v[rows] for k, v in base.inputs.items() if np.ndim(v) == 1}
+    branches = problem.branches if full else problem.fit_branches
+    free = base.free_columns(theta, rows)
+    n = free.shape[0]
+    cols = [free]
+    labels = [("baseline", n_) for n_ in base.free_names]
+    # the compliance scale stays within the catalog's spread: beyond it the data ask for an
+    # effect (or, for a stiffer gear, the nuisance report says so)
+    spread = baselines.STIFFNESS_SPREAD
+    lower = [1 / (1 + spread) if n_ == "compliance_scale" else -np.inf
+             for n_ in base.free_names]
+    upper = [1 / (1 - spread) if n_ == "compliance_scale" else np.inf
+             for n_ in base.free_names]
+
+    def add(effect: str, names, block, lo=-np.inf, hi=np.inf):
+        cols.append(block.reshape(n, -1))
+        labels.extend((effect, n_) for n_ in names)
+        lower.extend([lo] * len(names))
+        upper.extend([hi] * len(names))
+
+    factor = None
+    for name in effects:
+        th = {p.name: theta[key_of(name, p.name)] for p in parameters_of(name, problem.kind)}
+        if name in rig.RIG_EFFECTS:
+            names, block = rig.columns(name, inp, problem.step_position)
+            add(name, names, block)
+        elif name == "hysteresis":
+            z = fx.hysteresis_state(inp["torque_Nm"], th["T_s"], th["rho"], th["n"], branches,
+                                    th["z0"], th["first_scale"])
+            add(name, ["z_sat"], -z, 0.0)
+        elif name == "backlash":
+            add(name, ["lost_motion"], fx.backlash_twist(inp["torque_Nm"], 1.0, th["T_w"]), 0.0)
+        elif name == "housing_compliance":
+            add(name, ["compliance"], inp["torque_Nm"], 0.0)
+        elif name in ("te_1x", "te_2x"):
+            block = _harmonic(problem, int(name[3]), theta, full)
+            add(name, TE_LABELS[:block.shape[1]], block)
+        elif name == "low_load_efficiency":
+            f = fx.low_load_factor(inp["alpha"], th["c"], th["q"], inp["input_speed_rpm"],
+                                   th["s"])
+            factor = f if factor is None else factor * f
+        elif name == "temperature_dependence":
+            f = fx.temperature_factor(inp["temperature_C"], th["a"], th["b"],
+                                      fx.REFERENCE_TEMPERATURE_C)
+            factor = f if factor is None else factor * f
+    X = np.column_stack(cols)
+    if factor is not None:  # η = η0·Ke(α)·F(t): the effects scale the whole efficiency
+        X = X * factor[:, None]
+    return X, labels, np.array(lower), np.array(upper)
+
+
+def solve(X: np.ndarray, y: np.ndarray, lower: np.ndarray, upper: np.ndarray) -> np.ndarray:
+    """Linear least squares with bounds, on columns scaled to unit RMS."""
+    norm = np.sqrt(np.mean(X * X, axis=0))
+    norm[norm == 0] = 1.0
+    Xs = X / norm
+    beta = np.linalg.lstsq(Xs, y, rcond=None)[0]
+    lo, hi = lower * norm, upper * norm
+    if np.any(beta < lo) or np.any(beta > hi):
+        beta = lsq_linear(Xs, y, bounds=(lo, hi), method="bvls").x
+    return beta / norm
+
+
+# --------------------------------------------------------------------------- fitting
+def _transform(p: fx.Parameter, scale: float):
+    lo, hi = p.lower * scale, p.upper * scale
+    log = lo > 0 and hi / lo >= 10
+    return log, lo, hi
+
+
+def _grid(p: fx.Parameter, scale: float, points: int = GRID_POINTS) -> np.ndarray:
+    log, lo, hi = _transform(p, scale)
+    if log:
+        return np.geomspace(lo, hi, points + 2)[1:-1]
+    return np.linspace(lo, hi, points + 2)[1:-1]
+
+
+def _evaluate(problem: Problem, effects, theta):
+    Xf, labels, lo, hi = columns(problem, effects, theta)
+    beta = solve(Xf, problem.y, lo, hi)
+    return Xf, beta, labels, lo, hi
+
+
+def fit_model(problem: Problem, effects: tuple[str, ...],
+              start: dict[str, float] | None = None) -> Fit:
+    """Fit ``effects`` on top of the baseline; ``start`` holds known nonlinear values."""
+    params = nonlinear(problem.kind, effects)
+    keys = list(params)
+    scale = {k: problem.scales[params[k].scale] for k in keys}
+    theta = {k: v for k, v in (start or {}).items() if k in params}
+    new = [k for k in keys if k not in theta]
+    for k in keys:
+        start_value = params[k].start
+        theta.setdefault(k, float(_grid(params[k], scale[k])[GRID_POINTS // 2])
+                         if start_value is None else start_value * scale[k])
+    searched = [k for k in new if params[k].start is None]
+
+    def rss_of(th):
+        Xf, beta, *_ = _evaluate(problem, effects, th)
+        r = problem.y - Xf @ beta
+        return float(r @ r)
+
+    def grid_search(th, names, points):
+        """Best of a grid over ``names`` with the other shape parameters held."""
+        grids = np.meshgrid(*[_grid(params[k], scale[k], points) for k in names],
+                            indexing="ij")
+        best, out = math.inf, th
+        for values in zip(*[g.ravel() for g in grids]):
+            trial = {**th, **dict(zip(names, map(float, values)))}
+            rss = rss_of(trial)
+            if rss < best:
+                best, out = rss, trial
+        return out
+
+    if searched:
+        theta = grid_search(theta, searched, GRID_POINTS)
+    if keys:
+        theta = _polish(problem, effects, theta, keys, params, scale)
+    old = [k for k in keys if k not in new and params[k].start is None]
+    if new and old:
+        # the earlier shapes were fitted without the new effect and may have bent to mimic
+        # it: search them again with the new effect in place and keep the better fit
+        again = _polish(problem, effects, grid_search(theta, old, REGRID_POINTS), keys,
+                        params, scale)
+        if rss_of(again) < rss_of(theta):
+            theta = again
+    return finish(problem, effects, theta, len(keys))
+
+
+def finish(problem: Problem, effects: tuple[str, ...], theta: dict[str, float],
+           n_shapes: int) -> Fit:
+    """The :class:`Fit` of a model at the shape ``theta``: amplitudes, prediction, CV."""
+    Xf, beta, labels, lo, hi = _evaluate(problem, effects, theta)
+    r = problem.y - Xf @ beta
+    X = columns(problem, effects, theta, full=True)[0]
+    # a bounded amplitude held at its bound (a play operator's weight at 0) is not in use
+    fit = Fit(effects, theta, beta, labels, problem.base.fixed + X @ beta, float(r @ r),
+              int(np.count_nonzero(beta)) + n_shapes, columns=Xf)
+    fit.cv_mse = _cv_mse(Xf, problem.y, lo, hi, problem.folds)
+    return fit
+
+
+def _polish(problem, effects, theta, keys, params, scale):
+    """All shape parameters together by bounded nonlinear least squares."""
+    forms = [_transform(params[k], scale[k]) for k in keys]
+    to_x = lambda th: np.array([math.log(th[k]) if f[0] else th[k] for k, f in zip(keys, forms)])
+    lo = np.array([math.log(f[1]) if f[0] else f[1] for f in forms])
+    hi = np.array([math.log(f[2]) if f[0] else f[2] for f in forms])
+
+    def from_x(x):
+        return {**theta, **{k: (math.exp(v) if f[0] else float(v))
+                            for k, v, f in zip(keys, x, forms)}}
+
+    def residual(x):
+        Xf, beta, *_ = _evaluate(problem, effects, from_x(x))
+        return problem.y - Xf @ beta
+
+    x0 = np.clip(to_x(theta), lo + 1e-9 * (hi - lo), hi - 1e-9 * (hi - lo))
+    result = least_squares(residual, x0, bounds=(lo, hi), x_scale=np.maximum(hi - lo, 1e-9),
+                           diff_step=1e-4, max_nfev=40 * len(keys))
+    return from_x(result.x)
+
+
+def _cv_mse(Xf, y, lo, hi, folds) -> float:
+    """5-fold cross-validated mean-square error (shape parameters held)."""
+    err = 0.0
+    for k in range(CV_FOLDS):
+        test = folds == k
+        beta = solve(Xf[~test], y[~test], lo, hi)
+        r = y[test] - Xf[test] @ beta
+        err += float(r @ r)
+    return err / len(y)

@@ -1,0 +1,77 @@
+"""Parameters of the named effects with their units, as the final model has them."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from . import effects as fx
+from .fitting import TE_LABELS, Fit, Problem, key_of, parameters_of
+from .rig import RIG_EFFECTS
+
+
+def _linear(fit: Fit, effect: str) -> dict[str, float]:
+    return {name: float(v) for (e, name), v in zip(fit.labels, fit.beta) if e == effect}
+
+
+def rig_params(problem: Problem, fit: Fit, effect: str) -> dict[str, dict]:
+    """A measurement effect's parameters [unit of the data unless stated]."""
+    b = _linear(fit, effect)
+    unit = problem.base.unit
+    out = {k: {"value": v, "unit": p.unit if p.unit == "-" else unit}
+           for k, v in b.items() for p in RIG_EFFECTS[effect].parameters if p.name == k}
+    if effect == "angle_offset":
+        out["at_record_position"] = {"value": problem.step_position, "unit": "-"}
+    if effect == "encoder_eccentricity":
+        out["amplitude"] = {"value": math.hypot(b["a"], b["b"]), "unit": unit}
+    return out
+
+
+def _te(b: dict[str, float], th: dict[str, float]) -> dict[str, tuple[float, str]]:
+    out = {"amplitude": (math.hypot(b["sin"], b["cos"]), "rad"),
+           "phase": (math.atan2(b["cos"], b["sin"]), "rad")}
+    if "sin_u1" in b:  # slowly varying amplitude: the largest over the record
+        u = np.linspace(-1, 1, 201)
+        p2 = 1.5 * u * u - 0.5
+        s = b["sin"] + b["sin_u1"] * u + b["sin_u2"] * p2
+        c = b["cos"] + b["cos_u1"] * u + b["cos_u2"] * p2
+        out["amplitude_max"] = (float(np.max(np.hypot(s, c))), "rad")
+    for shared in ("damping_ratio", "stiffness_scale"):
+        if shared in th:
+            out[shared] = (th[shared], "-")
+    return out
+
+
+def effect_params(problem: Problem, fit: Fit, effect: str) -> dict[str, dict]:
+    """The gear effect's parameters with units (amplitudes, shapes and derived figures)."""
+    b = _linear(fit, effect)
+    th = {p.name: fit.theta[key_of(effect, p.name)]
+          for p in parameters_of(effect, problem.kind)}
+    out: dict[str, tuple[float, str]] = {}
+    if effect == "hysteresis":
+        t0 = problem.scales["T0"]
+        out = {"z_sat": (b["z_sat"], "rad"), "T_s": (th["T_s"], "N·m"), "rho": (th["rho"], "-"),
+               "n": (th["n"], "-"), "z0": (th["z0"], "-"),
+               "first_scale": (th["first_scale"], "-"),
+               "loss_at_T0": (fx.hysteresis_loss(b["z_sat"], th["T_s"], th["rho"], th["n"], t0),
+                              "rad"),
+               "T0": (t0, "N·m")}
+    elif effect == "backlash":
+        out = {"lost_motion": (b["lost_motion"], "rad"), "T_w": (th["T_w"], "N·m")}
+    elif effect == "housing_compliance":
+        c = b["compliance"]
+        out = {"K_h": (1.0 / c if c > 0 else math.inf, "N·m/rad"), "compliance": (c, "rad/(N·m)")}
+    elif effect in ("te_1x", "te_2x"):
+        out = _te(b, fit.theta)
+    elif effect == "low_load_efficiency":
+        out = {"c": (th["c"], "-"), "q": (th["q"], "-"), "s": (th["s"], "-"),
+               "Ke_at_alpha_0.58_1000rpm": (
+                   float(fx.low_load_factor(np.array(0.58), th["c"], th["q"])), "-")}
+    elif effect == "temperature_dependence":
+        out = {"a": (th["a"], "-"), "b": (th["b"], "1/K"),
+               "t_ref": (fx.REFERENCE_TEMPERATURE_C, "°C")}
+    return {k: {"value": float(v), "unit": u} for k, (v, u) in out.items()}
+
+
+__all__ = ["effect_params", "rig_params", "TE_LABELS"]

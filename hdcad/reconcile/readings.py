@@ -1,0 +1,99 @@
+"""The catalog's nuisances as fitted, and readings of the data that cannot be told apart.
+
+A nuisance (stiffness scale, efficiency level, damping) is never reported as a missing
+effect; one outside the catalog's spread is reported as what it is ("stiffness 14 % below
+catalog"). Some effects are data-equivalent to a nuisance or to the rig: a much softer gear
+reads exactly like a series housing spring, a once-per-input-revolution transmission error
+like an eccentric input encoder, a temperature effect in a test that warms steadily like a
+drift with test time. The report then gives both readings.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .baseline import STIFFNESS_SPREAD
+from .fitting import Fit, Problem
+
+# |correlation| of temperature with test time above which a temperature effect and a drift
+# of the rig with time cannot be told apart.
+TIME_TEMPERATURE_CORRELATION = 0.8
+
+
+def _beta(fit: Fit, name: str) -> float | None:
+    for (effect, label), value in zip(fit.labels, fit.beta):
+        if effect == "baseline" and label == name:
+            return float(value)
+    return None
+
+
+def _scale_entry(name: str, value: float, what: str) -> dict:
+    within = abs(value - 1.0) <= STIFFNESS_SPREAD
+    side = "above" if value > 1 else "below"
+    text = (f"{what} {abs(value - 1):.1%} {side} catalog "
+            + ("(within" if within else "(outside") + f" the assumed ±{STIFFNESS_SPREAD:.0%})")
+    return {"name": name, "value": value, "unit": "-", "spread": STIFFNESS_SPREAD,
+            "within_spread": within, "text": text}
+
+
+def free_scale(problem: Problem, fit: Fit) -> float | None:
+    """Compliance scale of ``fit`` refitted without the spread's bounds and without a series
+    spring (which would take the same share): what the data say about the gear's stiffness."""
+    names = [label for label in fit.labels]
+    if ("baseline", "compliance_scale") not in names:
+        return None
+    keep = [i for i, (e, _) in enumerate(names) if e != "housing_compliance"]
+    beta = np.linalg.lstsq(fit.columns[:, keep], problem.y, rcond=None)[0]
+    return float(beta[[names[i] for i in keep].index(("baseline", "compliance_scale"))])
+
+
+def nuisances(problem: Problem, fit: Fit) -> list[dict]:
+    """Fitted nuisance parameters of the catalog model, each with a sentence."""
+    out = []
+    s = free_scale(problem, fit)
+    if s is not None and s > 0:
+        out.append(_scale_entry("stiffness_scale", 1.0 / s, "stiffness"))
+        width = fit.theta.get("catalog.corner_width")
+        if width is not None:
+            out.append({"name": "corner_width", "value": width, "unit": "N·m",
+                        "text": f"curve corners at T1/T2 spread over {width:.3g} N·m"})
+    if "stiffness_scale" in fit.theta:
+        out.append(_scale_entry("stiffness_scale", fit.theta["stiffness_scale"],
+                                "joint stiffness"))
+    if "damping_ratio" in fit.theta:
+        out.append({"name": "damping_ratio", "value": fit.theta["damping_ratio"], "unit": "-",
+                    "text": f"damping ratio {fit.theta['damping_ratio']:.3g}"})
+    eta = _beta(fit, "eta0")
+    if eta is not None:
+        out.append({"name": "efficiency_level", "value": eta, "unit": "%",
+                    "text": f"efficiency level η0 = {eta:.3g} % (the catalog's curves are "
+                            "lost: the level is not compared)"})
+    return out
+
+
+def equivalent(problem: Problem, fit: Fit, named: tuple[str, ...], found: list[dict]
+               ) -> list[dict]:
+    """Readings the data cannot tell apart from what was named or fitted."""
+    out = []
+    stiffness = next((n for n in found if n["name"] == "stiffness_scale"), None)
+    if problem.kind == "torsion" and stiffness and stiffness["value"] < 1 - STIFFNESS_SPREAD \
+            and "housing_compliance" in named:
+        k1 = problem.base.figures["K1_Nm_per_rad"][0]
+        out.append({"effects": ["housing_compliance"], "nuisance": "stiffness_scale",
+                    "text": f"the gear reads {1 - stiffness['value']:.0%} softer than the "
+                            "catalog; a series spring (housing, shafts) of about "
+                            f"{k1 * stiffness['value'] / (1 - stiffness['value']):.3g} N·m/rad "
+                            "reads the same"})
+    if problem.kind == "transmission" and "te_1x" in named:
+        out.append({"effects": ["te_1x"], "measurement": "encoder_eccentricity",
+                    "text": "once per WG revolution: the gear's transmission error, or an "
+                            "eccentric input encoder (the data read the same)"})
+    if problem.kind == "efficiency" and "temperature_dependence" in named:
+        t = problem.base.inputs["temperature_C"]
+        u = problem.base.inputs["record_position"]
+        if np.ptp(t) > 0 and abs(np.corrcoef(t, u)[0, 1]) > TIME_TEMPERATURE_CORRELATION:
+            out.append({"effects": ["temperature_dependence"], "measurement": "thermal_drift",
+                        "text": "the temperature rose with test time: the efficiency's "
+                                "change with temperature, or a drift of the rig with time "
+                                "(the data read the same)"})
+    return out

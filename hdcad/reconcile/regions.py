@@ -1,0 +1,123 @@
+"""Where the residual disagrees with the noise: operating-range bins and WG harmonics.
+
+Regions are bins of the kind's operating variable (torque and loading direction, input
+speed, load ratio, temperature); transmission's regions are the harmonics of the WG angle.
+A region is significant when its mean square residual exceeds the noise variance by
+``REGION_Z`` standard errors (with the effective sample size N/τ) and its RMS by
+``REGION_RMS_MIN``.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from .fitting import Problem, _harmonic
+
+# Significance of a region or a harmonic: z-score against the noise, and a floor relative
+# to the noise so that negligible structure is not reported.
+REGION_Z = 4.0
+REGION_RMS_MIN = 1.2     # region RMS / noise RMS
+HARMONIC_Z = 5.0
+HARMONIC_RMS_MIN = 0.3   # harmonic RMS / noise RMS
+HARMONIC_ORDERS = range(1, 7)
+
+
+def regions(problem: Problem) -> list[tuple[str, np.ndarray]]:
+    """(label, mask) of the operating-range bins where residuals are compared with noise."""
+    inp, kind = problem.base.inputs, problem.kind
+    if kind == "torsion":
+        torque = inp["torque_Nm"]
+        direction = directions(problem)
+        loading = direction * np.sign(torque) > 0
+        out = []
+        for lo, hi, mask in _bins(torque, 6):
+            for name, m in (("loading", loading), ("unloading", ~loading)):
+                out.append((f"torque {lo:.4g}…{hi:.4g} N·m, {name}", mask & m))
+        return out
+    if kind == "efficiency":
+        out = []
+        for col, label, unit in (("input_speed_rpm", "input speed", "r/min"),
+                                 ("alpha", "load ratio α", ""),
+                                 ("temperature_C", "temperature", "°C")):
+            for lo, hi, mask in _bins(inp[col], 4):
+                span = f"{lo:.4g}" if lo == hi else f"{lo:.4g}…{hi:.4g}"
+                out.append((f"{label} {span} {unit}".rstrip(), mask))
+        return out
+    if kind == "vibration":
+        return [(f"input speed {lo:.4g}…{hi:.4g} r/min", mask)
+                for lo, hi, mask in _bins(inp["input_speed_rpm"], 8)]
+    return []  # transmission: the harmonics of the WG angle are its regions (_harmonics)
+
+
+def directions(problem: Problem) -> np.ndarray:
+    starts, first = problem.branches
+    direction = np.empty(len(problem.base.y))
+    bounds = list(starts) + [len(direction)]
+    d = first
+    for s, e in zip(bounds[:-1], bounds[1:]):
+        direction[s:e] = d
+        d = -d
+    return direction
+
+
+def _bins(x: np.ndarray, count: int):
+    """(low, high, mask): the distinct values when there are few, else equal-width bins."""
+    values = np.unique(x)
+    if len(values) <= count:
+        return [(v, v, x == v) for v in values]
+    edges = np.linspace(x.min(), x.max(), count + 1)
+    index = np.clip(np.searchsorted(edges, x, side="right") - 1, 0, count - 1)
+    return [(edges[i], edges[i + 1], index == i) for i in range(count)]
+
+
+def region_table(problem, before, after, sigma, tau):
+    """Rows (label, rms before, rms after, significant) for every region."""
+    rows = []
+    for label, mask in regions(problem):
+        n = int(mask.sum())
+        if n < 10:
+            continue
+        ms = float(np.mean(before[mask] ** 2))
+        dof = max(n / tau, 1.0)
+        z = (ms / sigma ** 2 - 1.0) / math.sqrt(2.0 / dof)
+        rms = math.sqrt(ms)
+        rows.append((label, rms, math.sqrt(float(np.mean(after[mask] ** 2))),
+                     z > REGION_Z and rms > REGION_RMS_MIN * sigma))
+    return rows
+
+
+def harmonics(problem, residual, sigma, tau, theta=None):
+    """(order, rms, significant) of the residual at k cycles per WG revolution."""
+    out = []
+    if "wg_angle_rad" not in problem.base.inputs:
+        return out
+    rows = problem.rows
+    n_eff = max(len(rows) / tau, 3.0)
+    for k in HARMONIC_ORDERS:
+        X = np.column_stack([np.ones(len(rows)), _harmonic(problem, k, theta or {}, full=False)[:, :2]])
+        beta = np.linalg.lstsq(X, residual[rows], rcond=None)[0]
+        part = X[:, 1:] @ beta[1:]
+        rms = float(np.sqrt(np.mean(part ** 2)))
+        # each of the sin/cos coefficients has a standard error ≈ σ·√(2/N_eff) when the
+        # basis is balanced, so the harmonic's RMS has an error ≈ σ/√N_eff
+        z = rms / (sigma / math.sqrt(n_eff))
+        out.append((k, rms, z > HARMONIC_Z and rms > HARMONIC_RMS_MIN * sigma))
+    return out
+
+
+
+def unexplained(problem, final, sigma, tau, harmonics, fit) -> list[str]:
+    """Significant structure left in the residual after the accepted effects."""
+    out = []
+    explained_orders = {int(e[3]) for e in fit.effects if e.startswith("te_")}
+    for k, rms, sig in harmonics:
+        if sig and k not in explained_orders:
+            out.append(f"residual at {k} cycle(s) per WG revolution (RMS {rms:.3g} "
+                       f"{problem.base.unit}), unexplained")
+    for label, rms, _, sig in region_table(problem, final, final, sigma, tau):
+        if sig:
+            out.append(f"residual in {label} (RMS {rms:.3g} {problem.base.unit}, noise "
+                       f"{sigma:.3g}), unexplained")
+    return out

@@ -1,0 +1,95 @@
+"""Measurement-chain effects: what the test rig adds to the data, not the gear.
+
+They are fitted like the gear effects but reported apart (``measurement_effects``), so a
+reviewer knows whether to fix the rig or the model. Effects of the rig that are exactly a
+nuisance of the catalog model are not separable and are said so instead: a torque- or
+angle-sensor gain in torsion reads as the stiffness scale, in efficiency as the level.
+Channels in the wrong unit are found before any fit (:mod:`.units`).
+
+References
+----------
+Seed 000 p.020-021 (test arrangements: twist measured at the output with the input locked;
+transmission error as output angle against input angle).
+Page, E. S. (1954) "Continuous inspection schemes", Biometrika 41: the CUSUM change point
+used to place an offset step.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .effects import Effect, Parameter
+
+
+def _linear(name: str, unit: str, text: str) -> Parameter:
+    return Parameter(name, unit, text, -np.inf, np.inf, linear=True)
+
+
+RIG_EFFECTS: dict[str, Effect] = {e.name: e for e in (
+    Effect(
+        name="thermal_drift",
+        description=("A slow drift of the measured angle with test time (the rig and the "
+                     "gear warm up, the fixture creeps): smooth in time, unrelated to torque "
+                     "or angle."),
+        form="y += d1·u + d2·(3u² − 1)/2, u = record position from −1 (first row) to 1 (last)",
+        parameters=(_linear("d1", "rad", "linear drift over half the record"),
+                    _linear("d2", "rad", "curvature of the drift")),
+        kinds=("torsion", "transmission", "efficiency", "vibration")),
+    Effect(
+        name="angle_offset",
+        description=("The angle's zero moves once during the test (re-zeroed or slipped "
+                     "encoder, a coupling that slips): a step at one instant."),
+        form="y += s·[u ≥ u0], u0 at the residual's largest cumulative-sum excursion",
+        parameters=(_linear("step", "rad", "height of the step"),),
+        kinds=("torsion", "transmission", "vibration")),
+    Effect(
+        name="encoder_eccentricity",
+        description=("An output encoder mounted off-centre reads a once-per-output-"
+                     "revolution error; the gear's errors repeat per wave-generator "
+                     "revolution instead."),
+        form="y += a·sin(φ/R) + b·cos(φ/R), φ/R = output angle",
+        parameters=(_linear("a", "rad", "sine part"), _linear("b", "rad", "cosine part")),
+        kinds=("transmission", "vibration")),
+    Effect(
+        name="sensor_gain",
+        description=("The output angle sensor's scale is off: the measured angle grows by "
+                     "(1 + g) times the true one. The ratio is exact (tooth counts), so a "
+                     "slope error is the sensor's."),
+        form="y += g·φ/R",
+        parameters=(_linear("g", "-", "relative gain error"),),
+        kinds=("transmission",)),
+)}
+
+RIG_NAMES = tuple(RIG_EFFECTS)
+
+
+def applicable(kind: str) -> tuple[str, ...]:
+    return tuple(n for n, e in RIG_EFFECTS.items() if kind in e.kinds)
+
+
+def columns(name: str, inputs: dict[str, np.ndarray], step_position: float
+            ) -> tuple[list[str], np.ndarray]:
+    """(linear parameter names, columns) of a measurement effect on the given rows."""
+    u = inputs["record_position"]
+    if name == "thermal_drift":
+        return ["d1", "d2"], np.column_stack([u, 1.5 * u * u - 0.5])
+    if name == "angle_offset":
+        return ["step"], (u >= step_position).astype(float)
+    if name == "encoder_eccentricity":
+        out = inputs["output_angle_rad"]
+        return ["a", "b"], np.column_stack([np.sin(out), np.cos(out)])
+    if name == "sensor_gain":
+        return ["g"], inputs["output_angle_rad"]
+    raise KeyError(name)
+
+
+def step_position(residual: np.ndarray, position: np.ndarray) -> float:
+    """Record position u0 of the most likely single step in the residual's mean (CUSUM)."""
+    r = residual - residual.mean()
+    n = len(r)
+    k = np.arange(1, n)
+    cusum = np.cumsum(r)[:-1]
+    # the change-point statistic of a mean shift: |S_k| / √(k·(n − k)/n)
+    stat = np.abs(cusum) / np.sqrt(k * (n - k) / n)
+    i = int(np.argmax(stat[n // 50: n - n // 50]) + n // 50) if n > 100 else int(np.argmax(stat))
+    return float(0.5 * (position[i] + position[i + 1]))
