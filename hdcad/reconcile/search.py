@@ -142,11 +142,12 @@ class Candidate:
     reason: str = ""
 
 
-def select_rig(problem: Problem, start: Fit) -> tuple[Fit, list[dict]]:
+def select_rig(problem: Problem, start: Fit) -> tuple[Fit, list[dict], dict[str, Fit] | None]:
     """Add measurement-chain effects greedily while one passes the gates and explains more
     than any single gear effect would (a drift with test time must not take a temperature
-    effect of a test that warms steadily, nor the reverse)."""
-    current, table = start, []
+    effect of a test that warms steadily, nor the reverse). Also returns the single gear
+    effects fitted on the final model of this stage (None when none were)."""
+    current, table, singles = start, [], None
     names = list(rig.applicable(problem.kind))
     gear = fx.applicable(problem.kind)
     while names:
@@ -157,7 +158,8 @@ def select_rig(problem: Problem, start: Fit) -> tuple[Fit, list[dict]]:
                     current.residual(problem),
                     problem.base.inputs["record_position"][problem.rows])
             fits[name] = fit_model(problem, current.effects + (name,), current.theta)
-        rivals = [fit_model(problem, current.effects + (n,), current.theta) for n in gear]
+        singles = {n: fit_model(problem, current.effects + (n,), current.theta) for n in gear}
+        rivals = list(singles.values())
         sigma, tau = round_noise(problem, list(fits.values()) + rivals)
         gates = {n: gate(problem, current, f, sigma, tau) for n, f in fits.items()}
         rival = max((gate(problem, current, f, sigma, tau).delta_bic for f in rivals),
@@ -170,15 +172,18 @@ def select_rig(problem: Problem, start: Fit) -> tuple[Fit, list[dict]]:
         if not passing:
             break
         best = max(passing, key=lambda n: gates[n].delta_bic)
-        current = fits[best]
+        current, singles = fits[best], None
         names.remove(best)
-    return current, table
+    return current, table, singles
 
 
-def select_gear(problem: Problem, start: Fit) -> tuple[Candidate | None, list[Candidate]]:
-    """The best passing model among every single gear effect and every pair."""
+def select_gear(problem: Problem, start: Fit, singles: dict[str, Fit] | None = None
+                ) -> tuple[Candidate | None, list[Candidate]]:
+    """The best passing model among every single gear effect and every pair; ``singles``
+    are the single effects already fitted on ``start``."""
     names = fx.applicable(problem.kind)
-    singles = {n: fit_model(problem, start.effects + (n,), start.theta) for n in names}
+    if singles is None:
+        singles = {n: fit_model(problem, start.effects + (n,), start.theta) for n in names}
     pairs = {(a, b): _pair_fit(problem, start, singles[a], singles[b])
              for a, b in itertools.combinations(names, 2)} if MAX_GEAR_EFFECTS >= 2 else {}
     sigma, tau = round_noise(problem, [start] + list(singles.values()) + list(pairs.values()))

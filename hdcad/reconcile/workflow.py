@@ -146,8 +146,8 @@ def reconcile(kind: str, data: dict, model: GearModel, catalog: Catalog,
         r = (base.y - fit.prediction)[keep]
         return noise_rms(r) or _rmse(r)
 
-    with_rig, rig_table = search.select_rig(problem, start)
-    best, candidates = search.select_gear(problem, with_rig)
+    with_rig, rig_table, singles = search.select_rig(problem, start)
+    best, candidates = search.select_gear(problem, with_rig, singles)
     final = search.recheck_rig(problem, best.fit if best else with_rig)
     named = best.effects if best else ()
     resid0 = (base.y - start.prediction)
