@@ -72,6 +72,39 @@ def oil_level_check(model: GearModel, parts: list, duty: Duty, options: DesignOp
     return oil_level(**args)
 
 
+@dataclass
+class _Review:
+    check: CheckResult
+    files: list[str]
+
+    @property
+    def step_files(self) -> list[str]:
+        return [f for f in self.files if f.endswith(".step")]
+
+    @property
+    def figures(self) -> list:
+        from .report.context import Figure
+        return [Figure("review assembly", f, "the generated parts with their neighbours as "
+                       "true-size bodies (bearings ISO 15, seals, O-rings, rings, screws, "
+                       "plugs, gear outline), cut through the axis; the review_assembly "
+                       "check reports what its probes measured")
+                for f in self.files if f.endswith(".png")]
+
+
+def _review(model: GearModel, parts: list, stage: Path) -> _Review:
+    """The review assembly's probes as a check, with its STEP and section render."""
+    from .checks.review import review_check
+    from .geometry.build import review_plan
+    from .geometry.review import run_review
+    plan = review_plan(model, parts)
+    if plan is None:
+        return _Review(review_check(None, f"neighbour bodies for the {model.family} parts "
+                                          "(bearings, seals, screws, gear outline) are not "
+                                          "built yet"), [])
+    result = run_review(parts, plan, stage)
+    return _Review(review_check(result), result["files"])
+
+
 def _oil_level(model: GearModel, catalog: Catalog) -> tuple[float | None, str]:
     """Oil level A [mm below the axis] and its source: FD table 315-1 or the overlay."""
     if model.is_fd:
@@ -134,8 +167,32 @@ def _draw_parts(parts: list, stage: Path, masses: dict[str, float] | None = None
 
 def _part_record(part, mass_kg: float) -> dict:
     return {"name": part.name, "mass_kg": mass_kg, "dimensions": part.dimensions,
-            "notes": part.notes, "purchased": part.purchased,
-            "bolt_circles": [b.__dict__ for b in part.bolt_circles]}
+            "notes": part.notes, "purchased": part.purchased, "material": part.material,
+            "bolt_circles": [b.__dict__ for b in part.bolt_circles],
+            "fits": [dict(f.__dict__, deviations_um=list(f.deviations_um)) for f in part.fits],
+            "tolerances": [t.__dict__ for t in part.tolerances]}
+
+
+FITS_COLUMNS = ("part", "feature", "nominal_mm", "code", "kind", "upper_um", "lower_um",
+                "mate", "reason", "source")
+
+
+def _signed(value: float) -> str:
+    return "0" if value == 0 else f"{value:+g}"
+
+
+def _write_fits_csv(records: list[dict], path: Path) -> None:
+    """Every ISO 286 fit of every part, one row each (STEP AP214 carries no PMI)."""
+    import csv
+    with open(path, "w", newline="", encoding="utf-8") as f:
+        out = csv.writer(f, lineterminator="\n")
+        out.writerow(FITS_COLUMNS)
+        for rec in records:
+            for fit in rec["fits"]:
+                up, low = fit["deviations_um"]
+                out.writerow([rec["name"], fit["feature"], f"{fit['nominal_mm']:g}",
+                              fit["code"], fit["kind"], _signed(up), _signed(low), fit["mate"],
+                              fit["reason"], fit["source"]])
 
 
 def run_design(model: GearModel, duty: Duty, options: DesignOptions, catalog: Catalog,
@@ -176,18 +233,28 @@ def run_design(model: GearModel, duty: Duty, options: DesignOptions, catalog: Ca
         evaluation.checks.append(oil_level_check(model, parts, evaluation.duty, options,
                                                  catalog))
         evaluation.checks.append(interference_check(interference_mm3(parts), masses))
+        if model.family == "FD-2":
+            from .checks.seals import gap_seal_speed
+            journal = next((p.dimensions.get("gap_seal_journal_mm") for p in parts
+                            if "gap_seal_journal_mm" in p.dimensions), None)
+            evaluation.checks.append(gap_seal_speed(journal, evaluation.duty, model.ratio,
+                                                    options.check_rules.rotary_oring_speed_m_s))
+        review = _review(model, parts, stage)
+        evaluation.checks.append(review.check)
         clock.lap("geometric checks")
         result = evaluation.as_dict()
         result.update({"design_options": options.as_dict(),
                        "parts": [_part_record(p, masses[p.name]) for p in parts]})
         bolts = side.submit(make_bolt_figures, result["parts"], stage)
+        _write_fits_csv(result["parts"], stage / "fits.csv")
         files = clock.lap("export", _export_parts(parts, stage))
         drawings = clock.lap("drawings", _draw_parts(parts, stage, masses, options.material))
+        drawings += review.figures
         sheet = side.submit(write_calc_sheet, stage, result, evaluation, catalog, drawings,
                             plots.result() + bolts.result()).result()
         clock.lap("calc sheet")
-        files += ([f"drawings/{p.name}.png" for p in parts] + sheet["files"]
-                  + ["results.json"])
+        files += ([f"drawings/{p.name}.png" for p in parts] + review.step_files
+                  + sheet["files"] + ["fits.csv", "results.json"])
         result.update({"files": files, "bill_of_materials": sheet["bom"],
                        "calc_sheet": {"pages": sheet["pages"], "images": sheet["images"]}})
         (stage / "results.json").write_text(json_text(result), encoding="utf-8")

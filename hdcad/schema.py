@@ -56,6 +56,7 @@ LoadInertiaKgm2Range = _num(0.0, 1e6, "kg·m²", strict_low=True)
 ResonanceBandRange = _num(0.01, 1.0, "")
 StaticSafetyMinRange = _num(1.0, 10.0, "")
 AdjustmentEfficiencyRange = _num(0.05, 1.0, "")
+RotaryOringSpeedRange = _num(0.05, 2.0, "m/s")
 InputShaftMmRange = _num(1.0, 200.0, "mm")
 WallMmRange = _num(2.0, 60.0, "mm")
 FrictionCoefficientRange = _num(0.05, 0.5, "")
@@ -133,6 +134,7 @@ class RulesIn(_Strict):
     resonance_band: ResonanceBandRange = 0.20
     static_safety_min: StaticSafetyMinRange | None = None
     adjustment_efficiency: AdjustmentEfficiencyRange = 0.6
+    rotary_oring_speed_m_s: RotaryOringSpeedRange = 0.25
 
 
 class DriveIn(_Strict):

@@ -51,11 +51,11 @@ def test_fd2_design_writes_every_file(fd2_design):
 
 def test_step_reimports_as_valid_solids(fd2_design):
     _, folder = fd2_design
-    for name in ("casing_half_S.step", "casing_half_D.step"):
-        shape = cq.importers.importStep(str(folder / name)).val()
+    for name in ("casing_half_S", "casing_half_D", "sleeve_S", "sleeve_D"):
+        shape = cq.importers.importStep(str(folder / f"{name}.step")).val()
         assert shape.isValid() and len(shape.Solids()) == 1
     assembly = cq.importers.importStep(str(folder / "assembly.step"))
-    assert len(assembly.solids().vals()) == 2
+    assert len(assembly.solids().vals()) == 4  # two casing halves and their sleeves
 
 
 def test_step_opens_in_gmsh(fd2_design):
@@ -69,9 +69,9 @@ def test_step_opens_in_gmsh(fd2_design):
         entities = gmsh.model.occ.importShapes(str(folder / "assembly.step"))
         gmsh.model.occ.synchronize()
         volumes = [tag for dim, tag in entities if dim == 3]
-        assert len(volumes) == 2
+        assert len(volumes) == 4
         masses = [gmsh.model.occ.getMass(3, tag) for tag in volumes]
-        assert all(m > 1000 for m in masses)  # mm³: each half is a real solid
+        assert all(m > 1000 for m in masses)  # mm³: each part is a real solid
     finally:
         gmsh.finalize()
 
@@ -112,3 +112,20 @@ def test_interference_with_a_single_part_is_not_evaluated():
     assert single.status == "not_evaluated" and "no pair" in single.note
     pair = interference_check([("a", "b", 0.0)], {"a": 1.0, "b": 2.0})
     assert pair.status == "pass"
+
+
+def test_fits_travel_to_results_and_fits_csv(fd2_design):
+    """Every ISO 286 fit of the parts is in results.json and fits.csv (STEP AP214 carries no
+    PMI); the 6006 seat is M7 (ISO 286-2 on Ø55: 0/−30 µm)."""
+    import csv
+    _, folder = fd2_design
+    result = json.loads((folder / "results.json").read_text())
+    casing = next(p for p in result["parts"] if p["name"] == "casing_half_S")
+    seat = next(f for f in casing["fits"] if f["code"] == "M7")
+    assert seat["nominal_mm"] == 55 and seat["deviations_um"] == [0, -30]
+    rows = list(csv.DictReader((folder / "fits.csv").open(encoding="utf-8")))
+    assert len(rows) == sum(len(p["fits"]) for p in result["parts"])
+    assert {"part": "casing_half_S", "code": "M7", "upper_um": "0", "lower_um": "-30"}.items() \
+        <= next(r for r in rows if r["code"] == "M7" and r["part"] == "casing_half_S").items()
+    review = next(c for c in result["checks"] if c["id"] == "review_assembly")
+    assert review["status"] == "pass" and (folder / "review_assembly.step").is_file()

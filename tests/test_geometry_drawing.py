@@ -72,12 +72,19 @@ def _expected(code, flange, part):
     if code.startswith("FD"):
         fd0 = CATALOG.find("fd0_dimensions", size=25)  # table 311-1
         gear = (fd0["L_count"], TAP_DRILL_MM[fd0["M_thread"]], fd0["K_mm"], fd0["M_thread"])
+        if part.name.startswith("sleeve"):
+            # journal sleeve: collar ≥ d_a,min of 6006 (DIN 5418: 30 + 2 × 2.5), journal =
+            # bearing bore d (ISO 15), bore = WG hub bore φL (table 312-1)
+            fd2 = CATALOG.find("fd2_dimensions", size=25)
+            return "Ø35", ["Ø30", f"Ø{fd2['L_H7_mm']:g}"], []
         if part.name.startswith("casing"):
             fd2 = CATALOG.find("fd2_dimensions", size=25)  # table 312-1
             spline = (fd2["J_count"], ISO_273_MEDIUM_MM[fd2["K_thread"]], fd2["I_mm"],
                       fd2["K_thread"])
-            return (f"Ø{fd0['A_mm']:g}", [f"Ø{fd2['A_g7_mm']:g}", f"Ø{fd0['B_H7_mm']:g}"],
-                    [spline, gear])
+            # the body behind the running-gap seal is FD-0 φA; the front ring's Ø is a
+            # design value (seal journal + walls), so no catalog outer extent to compare
+            return (None, [f"Ø{fd0['A_mm']:g}", f"Ø{fd2['A_g7_mm']:g}",
+                           f"Ø{fd0['B_H7_mm']:g}"], [spline, gear])
         clearance = (fd0["L_count"], ISO_273_MEDIUM_MM[fd0["M_thread"]], fd0["K_mm"],
                      fd0["M_thread"])
         return f"Ø{fd0['A_mm']:g}", [f"Ø{fd0['B_H7_mm']:g}"], [clearance]
@@ -137,7 +144,7 @@ def _one_part(code, flange=None, name=None):
     return next(p for p in parts if name is None or p.name == name)
 
 
-@pytest.mark.parametrize("key, delta", [("outer_diameter_mm", 0.5), ("shaft_hole_mm", -0.02),
+@pytest.mark.parametrize("key, delta", [("outer_diameter_mm", 0.5), ("seal_recess_mm", -0.02),
                                         ("pilot_recess_mm", 1.0), ("thickness_mm", 0.1)])
 def test_wrong_dimension_raises(tmp_path, key, delta):
     part = _one_part("FD-25-80-2", name="casing_half_S")

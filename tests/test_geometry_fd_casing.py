@@ -1,4 +1,5 @@
-"""FD-…-2 casing half: build every size, export STEP, re-import it and measure the solid."""
+"""FD-…-2 casing halves and sleeves: build every size, export STEP, re-import it and measure
+the solid against the layout and the standards' rules (HOUSING_RULES §1-§4)."""
 
 import copy
 import math
@@ -6,40 +7,17 @@ import math
 import pytest
 
 cq = pytest.importorskip("cadquery")
-from OCP.BRepAdaptor import BRepAdaptor_Surface  # noqa: E402
 
 from hdcad.catalog import load_catalog  # noqa: E402
 from hdcad.design_options import DesignOptions  # noqa: E402
+from hdcad.geometry.drawing.measure import axial_features, cylinder_faces, z_cylinders  # noqa: E402
 from hdcad.geometry.fd_casing import FDCasingHalf  # noqa: E402
+from hdcad.geometry.fd_layout import WALL_MIN_MM  # noqa: E402
+from hdcad.geometry.fd_sleeve import FDSleeve  # noqa: E402
 from hdcad.geometry.part import export_step  # noqa: E402
 
-TOL = 0.01
+TOL = 0.01  # mm: STEP keeps the exact B-rep; a re-imported diameter agrees to rounding
 SIZES = FDCasingHalf.sizes(load_catalog())
-
-
-def _z_cylinders(shape):
-    """(x, y, radius) of every cylindrical face whose axis is parallel to Z, deduplicated."""
-    found = set()
-    for face in shape.Faces():
-        if face.geomType() != "CYLINDER":
-            continue
-        cyl = BRepAdaptor_Surface(face.wrapped).Cylinder()
-        axis = cyl.Axis().Direction()
-        if abs(abs(axis.Z()) - 1.0) > 1e-9:
-            continue
-        loc = cyl.Location()
-        found.add((round(loc.X(), 4), round(loc.Y(), 4), round(cyl.Radius(), 4)))
-    return found
-
-
-def _holes_on_circle(cylinders, circle_d, hole_d):
-    """Centres of holes Ø hole_d whose centre lies on the circle Ø circle_d (± TOL)."""
-    return {(x, y) for x, y, r in cylinders
-            if abs(r - hole_d / 2) <= TOL and abs(math.hypot(x, y) - circle_d / 2) <= TOL}
-
-
-def _central_diameters(cylinders):
-    return {2 * r for x, y, r in cylinders if math.hypot(x, y) <= TOL}
 
 
 @pytest.fixture(scope="module")
@@ -47,68 +25,134 @@ def catalog():
     return load_catalog()
 
 
-@pytest.mark.parametrize("size", SIZES)
-def test_casing_half_step_round_trip(size, catalog, tmp_path):
-    part = FDCasingHalf(size, catalog, DesignOptions(), side="D").build()
-    assert part.name == "casing_half_D"
-    path = tmp_path / f"{part.name}.step"
+def _round_trip(part, folder):
+    path = folder / f"{part.name}.step"
     export_step(part, path)
     shape = cq.importers.importStep(str(path)).val()
+    assert len(shape.Solids()) == 1 and shape.isValid()
+    return shape
 
-    solids = shape.Solids()
-    assert len(solids) == 1 and shape.isValid()
-    assert isinstance(solids[0], cq.Solid)
-    dims = part.dimensions
+
+def _feature(shape, diameter):
+    """The on-axis turned surface of ``diameter`` (merged faces) that reaches furthest in +z
+    (a groove splits a bore into two surfaces), or None."""
+    found = [c for c in axial_features(z_cylinders(shape)) if abs(c.diameter - diameter) <= TOL]
+    return max(found, key=lambda c: c.z1, default=None)
+
+
+def _holes_on_circle(shape, circle_d, hole_d):
+    return {(round(c.x, 3), round(c.y, 3)) for c in z_cylinders(shape)
+            if abs(c.diameter - hole_d) <= TOL
+            and abs(math.hypot(c.x, c.y) - circle_d / 2) <= TOL}
+
+
+def _radial_holes(shape, diameter):
+    """Cylindrical faces of ``diameter`` whose axis is perpendicular to Z (radial ports)."""
+    return [face for face, r, _, along_z in cylinder_faces(shape)
+            if along_z < 1e-9 and abs(2 * r - diameter) <= TOL]
+
+
+@pytest.mark.parametrize("side", ["S", "D"])
+@pytest.mark.parametrize("size", SIZES)
+def test_casing_half_measured_from_step(size, side, catalog, tmp_path):
+    half = FDCasingHalf(size, catalog, DesignOptions(), side=side)
+    lay, part = half.lay, half.build()
+    shape = _round_trip(part, tmp_path)
     box = shape.BoundingBox()
-    assert box.xlen == pytest.approx(dims["outer_diameter_mm"], abs=TOL)
-    assert box.ylen == pytest.approx(dims["outer_diameter_mm"], abs=TOL)
-    assert box.zmin == pytest.approx(0.0, abs=TOL)
-    assert box.zlen == pytest.approx(dims["thickness_mm"], abs=TOL)
+    assert box.xlen == pytest.approx(lay.outer_d, abs=TOL)
+    assert box.zmax == pytest.approx(lay.thickness, abs=TOL)
+    # the S half starts at its face; the D half's running spigot reaches past the gap
+    spigot = lay.gap_seal_length + DesignOptions().running_gap_mm
+    assert box.zmin == pytest.approx(0.0 if side == "S" else -spigot, abs=TOL)
 
-    cylinders = _z_cylinders(shape)
-    central = _central_diameters(cylinders)
-    for key in ("pilot_recess_mm", "bearing_seat_mm", "spigot_recess_mm", "seal_recess_mm",
-                "shaft_hole_mm"):
-        assert any(abs(d - dims[key]) <= TOL for d in central), (key, sorted(central))
+    b = lay.bearing
+    seat = _feature(shape, b.D)
+    assert seat.z1 == pytest.approx(lay.shoulder_z, abs=TOL)        # shoulder at the pair's end
+    assert seat.z1 - seat.z0 == pytest.approx(2 * b.B, abs=TOL)  # two bearings seated
+    assert seat.z0 == pytest.approx(lay.bearing_z, abs=TOL)      # above the ring groove
+    groove = _feature(shape, lay.bore_ring.d2)                      # DIN 472 groove
+    assert groove.z1 == pytest.approx(lay.bearing_z, abs=TOL)
+    assert groove.z1 - groove.z0 == pytest.approx(lay.bore_ring.m, abs=TOL)
+    seal = _feature(shape, lay.seal.d2)                             # lip-seal bore
+    assert seal.z0 == pytest.approx(lay.shoulder_z, abs=TOL)
+    assert seal.z1 - seal.z0 >= lay.seal.b + 0.3 - TOL
+    assert _feature(shape, half.fd2["A_g7_mm"]) is not None         # spline pilot
+    assert _feature(shape, half.fd0["B_H7_mm"]) is not None         # gear spigot recess
+    gap = _feature(shape, lay.gap_journal)                          # running-gap seal
+    assert gap is not None
+    if side == "S":  # the bore takes the D spigot; its groove holds the O-ring (rod type)
+        assert gap.z1 == pytest.approx(lay.s_bore_depth, abs=TOL)
+        gland = _feature(shape, lay.gap_journal + 2 * lay.gap_gland.radial_depth)
+        assert gland.z1 - gland.z0 == pytest.approx(lay.gap_gland.radial_width, abs=TOL)
 
     screws, gear = part.bolt_circles
-    for circle in (screws, gear):
-        centres = _holes_on_circle(cylinders, circle.diameter_mm, circle.hole_diameter_mm)
-        assert len(centres) == circle.count, circle.name
-        measured = 2 * sum(math.hypot(x, y) for x, y in centres) / len(centres)
-        assert measured == pytest.approx(circle.diameter_mm, abs=TOL), circle.name
-
-    # the M10×1 oil hole (tap drill Ø9) at the radius the part reports
-    plug = _holes_on_circle(cylinders, 2 * dims["oil_plug_radius_mm"], 9.0)
-    assert len(plug) == 1
+    assert len(_holes_on_circle(shape, screws.diameter_mm, screws.hole_diameter_mm)) == \
+        screws.count
+    assert len(_holes_on_circle(shape, gear.diameter_mm, gear.hole_diameter_mm)) == gear.count
+    # two radial oil ports: tap drill and spot face, at the port height
+    drills = _radial_holes(shape, lay.port.tap_drill)
+    spots = _radial_holes(shape, lay.port.spot_face)
+    assert len(spots) == 2 and len(drills) >= 2
+    for face in spots:
+        assert face.Center().z == pytest.approx(lay.port_z, abs=0.05)
 
 
 @pytest.mark.parametrize("size", SIZES)
-def test_catalog_values_and_axial_rule(size, catalog):
-    fd0, fd2 = catalog.find("fd0_dimensions", size=size), catalog.find("fd2_dimensions", size=size)
-    options = DesignOptions(running_gap_mm=0.6)
-    half = FDCasingHalf(size, catalog, options, side="S")
-    part = half.build()
-    dims = part.dimensions
-    assert part.name == "casing_half_S"
-    assert dims["outer_diameter_mm"] == fd0["A_mm"]
-    assert dims["pilot_recess_mm"] == fd2["A_g7_mm"]
-    assert dims["spigot_recess_mm"] == fd0["B_H7_mm"]
-    assert dims["pilot_depth_mm"] == pytest.approx(fd2["B_mm"] + fd2["C_mm"] / 2 - 0.3)
-    floor = dims["thickness_mm"] - dims["pilot_depth_mm"]
-    assert floor >= (fd0["D_mm"] - fd2["D_mm"]) / 2 - 1e-9
-    assert floor >= half.bearing_w + half.seal_w + options.wall_mm
-    if floor == pytest.approx((fd0["D_mm"] - fd2["D_mm"]) / 2):
-        # two halves plus the running gap make exactly the FD-0 unit width
-        assert 2 * dims["thickness_mm"] + 0.6 == pytest.approx(fd0["D_mm"])
-    assert dims["oil_plug_radius_mm"] >= catalog.find("fd_oil_level", size=size)["A_mm"]
-    screws, gear = part.bolt_circles
-    assert (screws.name, screws.diameter_mm, screws.count, screws.thread, screws.kind) == (
-        "spline_screws", fd2["I_mm"], fd2["J_count"], fd2["K_thread"], "clearance")
-    assert (gear.name, gear.diameter_mm, gear.count, gear.thread, gear.kind, gear.depth_mm) == (
-        "gear_mount", fd0["K_mm"], fd0["L_count"], fd0["M_thread"], "tapped", fd0["M_depth_mm"])
-    assert any("running_gap" in n for n in part.notes)
-    assert any("oil level A" in n and "axis" in n for n in part.notes)
+def test_bearing_abutments_and_retention_follow_din_5418(size, catalog):
+    lay = FDCasingHalf(size, catalog, DesignOptions(), side="S").lay
+    b = lay.bearing
+    # the outer-ring shoulder (seal-bore step) touches the outer ring only
+    assert lay.seal.d2 <= b.housing_shoulder_max
+    assert lay.seal.d2 > (b.land_d1 or b.d) + 1.0
+    # the sleeve collar carries the inner ring: at least d_a,min, clear of the outer ring
+    assert b.shaft_shoulder_min <= lay.collar_d < b.D - 2 * b.h
+    # DIN 471/472 rings sized for the journal and the seat
+    assert (lay.shaft_ring.d1, lay.bore_ring.d1) == (b.d, b.D)
+    # the port window keeps max(3 mm, 0.5 d) to the pilot recess and to the ring groove
+    lig = lay.port.ligament_min
+    assert lay.port_z - lay.port.tap_drill / 2 - lay.pilot_depth >= lig - 1e-9
+    assert lay.bearing_z - lay.bore_ring.m - (lay.port_z + lay.port.tap_drill / 2) >= lig - 1e-9
+    # the ports reach level A and the running-gap seal leaves the S spline a pilot
+    assert lay.port_radius >= lay.level
+    assert lay.pilot_depth - lay.s_bore_depth >= 3.0
+    # walls: running-gap spigot and the rim around the gap bore
+    assert (lay.gap_journal - lay.spigot_id) / 2 >= WALL_MIN_MM - 1e-9
+    assert (lay.outer_d - lay.gap_groove_d) / 2 >= WALL_MIN_MM - 1e-9
+
+
+@pytest.mark.parametrize("size", SIZES)
+def test_sleeve_measured_from_step(size, catalog, tmp_path):
+    sleeve = FDSleeve(size, catalog, DesignOptions(), side="D")
+    lay, part = sleeve.lay, sleeve.build()
+    shape = _round_trip(part, tmp_path)
+    journal = [c for c in axial_features(z_cylinders(shape))
+               if abs(c.diameter - lay.bearing.d) <= TOL]
+    under_bearings, seal_track = journal[0], journal[-1]  # split by the DIN 471 groove
+    assert under_bearings.z0 == pytest.approx(lay.bearing_z, abs=TOL)
+    assert under_bearings.z1 == pytest.approx(lay.shoulder_z, abs=TOL)
+    # the seal track runs under the whole lip seal (its own diameter, its width)
+    assert seal_track.z0 <= lay.seal_outer_z - lay.seal.b + TOL
+    assert seal_track.z1 >= lay.seal_outer_z - TOL
+    collar = _feature(shape, lay.collar_d)
+    assert collar.z1 == pytest.approx(lay.bearing_z, abs=TOL)
+    assert _feature(shape, lay.shaft_ring.d2) is not None            # DIN 471 groove
+    assert _feature(shape, lay.shaft_d) is not None                  # bore on the shaft
+    assert _feature(shape, lay.shaft_d + 2 * lay.shaft_gland.radial_depth) is not None
+    fits = {f.code for f in part.fits}
+    assert {"k5", "h11", "H7"} <= fits
+
+
+@pytest.mark.parametrize("size", [25, 100])
+def test_fits_carry_iso_286_deviations(size, catalog):
+    part = FDCasingHalf(size, catalog, DesignOptions(), side="S").build()
+    codes = {f.code: f for f in part.fits}
+    assert {"M7", "H7", "H8"} <= set(codes)
+    seat = codes["M7"]
+    assert seat.deviations_um[0] == 0.0 and seat.deviations_um[1] < 0  # M7: 0 / −IT7
+    if size == 25:  # ISO 286-2: M7 on Ø55 is 0/−30 µm, H8 on Ø42 is +39/0 µm
+        assert seat.deviations_um == (0.0, -30)
+        assert next(f for f in part.fits if f.code == "H8" and f.nominal_mm == 42
+                    ).deviations_um == (39, 0.0)
 
 
 def test_unknown_size_names_the_allowed_sizes(catalog):
@@ -126,3 +170,8 @@ def test_bolt_circle_that_does_not_fit_raises(catalog):
     bad.find("fd0_dimensions", size=50)["L_count"] = 60  # 60 × M10 on Ø155 overlap
     with pytest.raises(ValueError, match="gear_mount.*overlap"):
         FDCasingHalf(50, bad, DesignOptions())
+
+
+def test_a_running_gap_that_eats_the_pilot_raises(catalog):
+    with pytest.raises(ValueError, match="pilot"):
+        FDCasingHalf(20, catalog, DesignOptions(running_gap_mm=20.0))

@@ -46,10 +46,13 @@ def test_cases_that_cannot_be_decided_are_not_evaluated(kw, reason):
     assert r.status == "not_evaluated" and reason in r.note
 
 
-def test_level_hole_at_radius_a_is_the_level_plug():
-    r = _check(plug_radius_mm=15.0)
+def test_level_port_beyond_a_is_turned_to_the_level():
+    # a port opening at radius 27.5 stands A = 15 below the axis when turned acos(15/27.5)
+    r = _check(plug_radius_mm=27.5)
     hole = next(c for c in r.details["criteria"] if c["name"] == "level hole")
-    assert "fill until oil appears" in hole["text"]
+    assert hole["status"] == "pass" and "56.9° from the bottom" in hole["text"]
+    inside = _check(plug_radius_mm=10.0)
+    assert inside.status == "fail" and "cannot show the level" in inside.note
 
 
 def _segment_area(radius, depth):
@@ -71,13 +74,27 @@ def test_fd_cavity_volume_matches_the_circular_segment_formula(catalog, code):
     parts = build_parts(model, catalog, DesignOptions())
     cavity = fd_casing_cavity(parts)
     level = float(catalog.find("fd_oil_level", size=size)["A_mm"])
-    # independent: the cavity is the FD-2 φA g7 cylinder (table 312-1) over both pilot depths
-    # and the running gap, less the WG shaft (bore of support bearing Q)
-    big_r = catalog.find("fd2_dimensions", size=size)["A_g7_mm"] / 2
+    # independent: the FD-2 φA g7 cylinder (table 312-1) over both pilot depths and the
+    # running gap, plus each half's port window (Ø relief from the spline face to the
+    # bearings), less the user's shaft φL (table 312-1)
+    fd2 = catalog.find("fd2_dimensions", size=size)
+    big_r, small_r = fd2["A_g7_mm"] / 2, fd2["L_H7_mm"] / 2
     half = parts[0].dimensions
     length = 2 * half["pilot_depth_mm"] + DesignOptions().running_gap_mm
-    small_r = cavity.seal_shaft_mm / 2
-    expected = (_segment_area(big_r, level) - _segment_area(small_r, level)) * length / 1000
+    # the window: relief (or seat) Ø outside; the shaft up to the WG hub end, then the
+    # sleeve collar inside; integrated piecewise between the breakpoints
+    sleeve = next(p for p in parts if p.name == "sleeve_S").dimensions
+    edges = sorted({half["pilot_depth_mm"], half["relief_end_mm"],
+                    half["bearing_seat_z_mm"], sleeve["sleeve_start_mm"]})
+    window = 0.0
+    for a, b in zip(edges, edges[1:]):
+        mid = (a + b) / 2
+        outer = (half["relief_diameter_mm"] if mid < half["relief_end_mm"]
+                 else half["bearing_seat_mm"]) / 2
+        inner = small_r if mid < sleeve["sleeve_start_mm"] else sleeve["outer_diameter_mm"] / 2
+        window += (_segment_area(outer, level) - _segment_area(inner, level)) * (b - a)
+    expected = ((_segment_area(big_r, level) - _segment_area(small_r, level)) * length
+                + 2 * window) / 1000
     # OCCT booleans on exact cylinders: agreement to 0.1 % (tessellation plays no part)
     assert volume_below_mL(cavity.solid, level) == pytest.approx(expected, rel=1e-3)
     assert cavity.depth_mm == big_r
@@ -123,16 +140,19 @@ def test_an_opening_below_the_level_fails_and_is_named():
     assert r.status == "fail" and sealed["status"] == "fail" and "1 mm gap" in sealed["text"]
 
 
-def test_fd_casing_cavity_names_the_running_gap(catalog):
+def test_fd_running_gap_is_closed_by_the_spigot_o_ring(catalog):
     pytest.importorskip("cadquery")
     from hdcad.design_options import DesignOptions
     from hdcad.geometry.build import build_parts
     from hdcad.geometry.oil import fd_casing_cavity
     from hdcad.models import resolve
     options = DesignOptions(running_gap_mm=1.5)
-    cavity = fd_casing_cavity(build_parts(resolve("FD-25-80-2", catalog), catalog, options))
-    # the halves stand running_gap_mm apart (design option) and turn relative to each other
-    assert len(cavity.openings) == 1 and "1.5 mm running gap" in cavity.openings[0]
+    parts = build_parts(resolve("FD-25-80-2", catalog), catalog, options)
+    assert fd_casing_cavity(parts).openings == []
+    s_half = next(p for p in parts if p.name == "casing_half_S")
+    ring = next(n for n in s_half.neighbours if n.kind == "oring")
+    # the O-ring sits in the S half's bore groove, over the D half's spigot
+    assert 0 < ring.z_mm < s_half.dimensions["gap_seal_length_mm"]
 
 
 def test_no_margin_is_shown_when_a_non_numeric_criterion_fails():

@@ -177,7 +177,7 @@ def test_bolt_pattern_two_circles_of_fd_casing(catalog, tmp_path):
     circles = [dataclasses.asdict(b) for b in part.bolt_circles]
     path = plots.bolt_pattern_plot(circles, tmp_path / "casing.svg", "casing half",
                                    part.dimensions["outer_diameter_mm"],
-                                   part.dimensions["shaft_hole_mm"])
+                                   part.dimensions["seal_recess_mm"])
     assert len(_hole_markers(path)) == sum(c["count"] for c in circles)
     text = _all_text(path)
     for c in circles:

@@ -15,6 +15,8 @@ that the seals do not stand in oil at rest.
 
 from __future__ import annotations
 
+import math
+
 from .lubrication import Criterion
 from .record import CheckResult, Quantity, FAIL, NOT_EVALUATED, PASS, margin_of
 
@@ -114,9 +116,12 @@ def _sealed(openings: list[str]) -> Criterion:
 def _plug(level: float, plug_radius: float | None) -> Criterion:
     if plug_radius is None:
         return Criterion("level hole", PASS, "no level hole: fill by the volume given")
-    if abs(plug_radius - level) < 0.05:
-        return Criterion("level hole", PASS, f"axial level hole at radius A = {level:g} mm: "
-                                             "turn it to the bottom and fill until oil appears")
+    if plug_radius < level:
+        return Criterion("level hole", FAIL,
+                         f"the level port opens at radius {plug_radius:g} mm, inside level A = "
+                         f"{level:g} mm: it cannot show the level")
+    turn = math.degrees(math.acos(level / plug_radius))
     return Criterion("level hole", PASS,
-                     f"the fill hole sits at radius {plug_radius:g} mm, not A (the bearing seat "
-                     "takes radius A): fill the volume given, hole at the top")
+                     f"the level port opens at radius {plug_radius:g} mm ≥ A: turned "
+                     f"{turn:.1f}° from the bottom its opening stands A = {level:g} mm below "
+                     "the axis; fill through the other port until oil runs out there")

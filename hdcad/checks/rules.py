@@ -12,6 +12,11 @@ changes it in the design-options file under ``rules:`` (``hdcad check/design --d
   (fw > 1.5 → 2, else 1.5). Set it to the table's value for the application.
 * ``adjustment_efficiency`` (0.6): efficiency of the FD phase-adjustment drive in the
   adjustment torque; the value of the seed's worked example (seed 001, FD-25-80).
+* ``rotary_oring_speed_m_s`` (0.25): highest surface speed at which hdcad uses an O-ring as
+  the slow rotary seal between the FD casing halves. O-ring makers class rotation below
+  50 ft/min (0.25 m/s) as slow dynamic duty that a standard gland serves (Minnesota Rubber /
+  Quadion design guide, "Defining factors in sealing applications"); faster needs a rotary
+  gland or a lip seal.
 """
 
 from __future__ import annotations
@@ -24,6 +29,7 @@ class Rules:
     resonance_band: float = 0.20
     static_safety_min: float | None = None
     adjustment_efficiency: float = 0.6
+    rotary_oring_speed_m_s: float = 0.25
 
     def as_dict(self) -> dict:
         return asdict(self)

@@ -44,13 +44,18 @@ def build_parts(model: GearModel, catalog: Catalog, options: DesignOptions) -> l
 
 
 def _fd_casing(model, catalog, options) -> list[Part]:
+    """Both casing halves and their journal sleeves, back to back across the running gap
+    (each sleeve is built in its half's frame and placed with it)."""
     from .fd_casing import FDCasingHalf
+    from .fd_sleeve import FDSleeve
     gap = options.running_gap_mm
-    s_half = FDCasingHalf(model.size, catalog, options, side="S").build()
-    d_half = FDCasingHalf(model.size, catalog, options, side="D").build()
-    s_half.flip, s_half.offset_z_mm = True, -gap / 2
-    d_half.offset_z_mm = gap / 2
-    return [s_half, d_half]
+    parts = []
+    for side, flip, z in (("S", True, -gap / 2), ("D", False, gap / 2)):
+        for maker in (FDCasingHalf, FDSleeve):
+            part = maker(model.size, catalog, options, side=side).build()
+            part.flip, part.offset_z_mm = flip, z
+            parts.append(part)
+    return parts
 
 
 def _fd_flanges(model, catalog, options) -> list[Part]:
@@ -94,3 +99,12 @@ def interference_mm3(parts: list[Part]) -> list[tuple[str, str, float]]:
         common = a.intersect(b)
         out.append((name_a, name_b, common.Volume() if common.Solids() else 0.0))
     return out
+
+
+def review_plan(model: GearModel, parts: list[Part]) -> dict | None:
+    """Seed point and section angles of the family's review assembly; None when its parts
+    carry no neighbour bodies yet (the review is then not evaluated)."""
+    if model.family == "FD-2":
+        from .fd_review import review_plan as fd_plan
+        return fd_plan(parts)
+    return None

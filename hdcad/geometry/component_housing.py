@@ -40,9 +40,9 @@ import cadquery as cq
 
 from ..catalog import Catalog
 from ..design_options import DesignOptions
-from .fd_casing import (BEARING_TABLE, CBORE_SINK_MM, EDGE_MARGIN_MM, MIN_FLOOR_MM,
-                        SEAL_DEPTH_ALLOWANCE_MM, SEAL_TABLE, SHAFT_CLEARANCE_MM, _check_ring,
-                        bearing_dimensions, seal_dimensions)
+from .housing_common import (BEARING_TABLE, CBORE_SINK_MM, EDGE_MARGIN_MM, MIN_FLOOR_MM,
+                             SEAL_DEPTH_ALLOWANCE_MM, SEAL_TABLE, SHAFT_CLEARANCE_MM,
+                             bearing_dimensions, check_ring, seal_dimensions)
 from .flanges import TAP_RUNOUT_PITCHES
 from .part import BoltCircle, Part
 from .primitives import cylinder, ring_points, single_solid
@@ -225,13 +225,13 @@ class ComponentSetHousing:
             if inner >= outer:
                 raise ValueError(f"{label}: {inner_name} Ø{inner:g} does not fit inside the "
                                  f"{outer_name} Ø{outer:g}")
-        _check_ring(f"{label} housing cs_screws", o["cs_bolt_circle_mm"], self.cs_count,
+        check_ring(f"{label} housing cs_screws", o["cs_bolt_circle_mm"], self.cs_count,
                     self.cs_d, self.cavity_d, cs_od)
-        _check_ring(f"{label} input_cover cs_screws", o["cs_bolt_circle_mm"], self.cs_count,
+        check_ring(f"{label} input_cover cs_screws", o["cs_bolt_circle_mm"], self.cs_count,
                     self.clearance, self.cover_cavity_d, cs_od)
-        _check_ring(f"{label} input_cover counterbores", o["cs_bolt_circle_mm"], self.cs_count,
+        check_ring(f"{label} input_cover counterbores", o["cs_bolt_circle_mm"], self.cs_count,
                     self.cbore, max(self.in_D, self.in_seal[0]), self.housing_od)
-        _check_ring(f"{label} output_flange fs_screws", o["fs_bolt_circle_mm"], self.fs_count,
+        check_ring(f"{label} output_flange fs_screws", o["fs_bolt_circle_mm"], self.fs_count,
                     self.fs_d, 0.0, o["fs_boss_diameter_mm"])
 
     # -- solids ------------------------------------------------------------------------------

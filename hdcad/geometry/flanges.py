@@ -19,7 +19,8 @@ import cadquery as cq
 from ..catalog import Catalog
 from ..design_options import DesignOptions
 from .drive_feature import drive_feature
-from .gh_interface import NOT_FOR_MANUFACTURE, gear_head_face, iso286_fit
+from .gh_interface import NOT_FOR_MANUFACTURE, gear_head_face
+from .iso286 import iso286_fit
 from .part import BoltCircle, Part
 from .primitives import EDGE_BREAK_MM, break_outer_edges, cylinder, ring_points, single_solid
 from .standards import (DIN_974_1_CBORE_MM, ISO_261_PITCH_MM, ISO_273_MEDIUM_MM, ISO_4762_HEAD_MM,

@@ -19,7 +19,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from ..catalog import Catalog
-from .part import BoltCircle, Fit
+from .part import BoltCircle
 from .primitives import cylinder, ring_points
 from .standards import DIN_974_1_CBORE_MM, ISO_273_MEDIUM_MM, ISO_4762_HEAD_MM, thread_diameter
 
@@ -123,19 +123,3 @@ class GearHeadFace:
 def gear_head_face(catalog: Catalog, series: str, size: int) -> GearHeadFace | None:
     row = catalog.find(TABLE, series=series, size=size) if catalog.has(TABLE) else None
     return None if row is None else GearHeadFace(row)
-
-
-def iso286_fit(catalog: Catalog, feature: str, nominal_mm: float, code: str, mate: str,
-               reason: str) -> Fit:
-    """A Fit with its ISO 286 deviations [µm] for H7 (hole) or g6 (shaft)."""
-    row = next(r for r in catalog.rows("iso286_h7_g6")
-               if r["over_mm"] < nominal_mm <= r["upto_mm"])
-    if code == "H7":
-        deviations, kind = (row["IT7_um"], 0.0), "hole"
-    elif code == "g6":
-        es = -row["g_es_below_zero_um"]  # stored as a magnitude: g lies below the zero line
-        deviations, kind = (es, es - row["IT6_um"]), "shaft"
-    else:
-        raise ValueError(f"fit {code!r}: only H7 and g6 are tabulated (iso286_h7_g6.csv)")
-    return Fit(feature, nominal_mm, code, kind, deviations, mate, reason,
-               catalog.table("iso286_h7_g6").source)

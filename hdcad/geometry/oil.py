@@ -10,7 +10,7 @@ from dataclasses import dataclass, field
 
 import cadquery as cq
 
-from .fd_casing import SHAFT_CLEARANCE_MM
+from .housing_common import SHAFT_CLEARANCE_MM
 from .part import Part
 from .primitives import cylinder
 
@@ -27,31 +27,35 @@ class OilCavity:
 def fd_casing_cavity(parts: list[Part]) -> OilCavity:
     """The space the two FD casing halves enclose, in assembly coordinates.
 
-    It is the pilot-recess cylinder between the two recess floors, less the wave-generator
-    shaft. The component set itself sits in it; its own volume is not in the catalog, so the
-    oil volume from this cavity is an upper bound.
+    The pilot recesses between the two spline faces and each half's port window (seat bore
+    or relief from the spline face to the bearings), less the user's shaft and the journal
+    sleeves. The component
+    set itself sits in it; its own volume is not in the catalog, so the oil volume from this
+    cavity is an upper bound. The running gap is closed by the O-ring on the D half's spigot.
     """
     halves = [p for p in parts if "pilot_recess_mm" in p.dimensions]
     pilot = min(p.dimensions["pilot_recess_mm"] for p in halves)
-    ends = [(p.offset_z_mm - p.dimensions["pilot_depth_mm"] if p.flip
-             else p.offset_z_mm + p.dimensions["pilot_depth_mm"]) for p in halves]
+    pieces = []
+    for half in halves:
+        d = half.dimensions
+        sign = -1.0 if half.flip else 1.0
+        z_face = half.offset_z_mm + sign * d["pilot_depth_mm"]
+        z_relief = half.offset_z_mm + sign * d["relief_end_mm"]
+        z_bearing = half.offset_z_mm + sign * d["bearing_seat_z_mm"]
+        pieces += [cylinder(d["relief_diameter_mm"], *sorted((z_face, z_relief))),
+                   cylinder(d["bearing_seat_mm"], *sorted((z_relief, z_bearing)))]
+    ends = [half.offset_z_mm + (-1.0 if half.flip else 1.0) * half.dimensions["pilot_depth_mm"]
+            for half in halves]
     z0, z1 = min(ends), max(ends)
-    shaft = min(p.dimensions["shaft_hole_mm"] for p in halves) - 2 * SHAFT_CLEARANCE_MM
-    solid = cylinder(pilot, z0, z1).cut(cylinder(shaft, z0, z1))
-    return OilCavity(solid, pilot / 2, shaft,
-                     " at most: the space inside the casing halves (pilot recesses) less the "
-                     "shaft; the component set's own volume below the level is not in the "
-                     "catalog and is not subtracted", [_running_gap(halves, pilot)])
-
-
-def _running_gap(halves: list[Part], pilot: float) -> str:
-    """The gap between the two turning casing halves: it opens the cavity all round."""
-    faces = sorted(p.offset_z_mm for p in halves)
-    outer = max(p.dimensions["outer_diameter_mm"] for p in halves)
-    return (f"the {faces[-1] - faces[0]:g} mm running gap between the casing halves, which turn "
-            f"relative to each other, opens the cavity all round from Ø{pilot:g} to "
-            f"Ø{outer:g}; the FD-0 unit's seal there is shown only in the lost figure 311-1: "
-            "add a rotary seal or labyrinth there before filling oil")
+    shaft = min(p.dimensions["shaft_mm"] for p in halves)
+    sleeves = [p.placed() for p in parts if p.name.startswith("sleeve")]
+    solid = cylinder(pilot, z0, z1).fuse(*pieces).cut(
+        cylinder(shaft, z0 - 200, z1 + 200), *sleeves).clean()
+    seal_shaft = min(p.dimensions["seal_shaft_mm"] for p in halves)
+    return OilCavity(solid, pilot / 2, seal_shaft,
+                     " at most: the pilot recesses and the port windows less the shaft and sleeves; the "
+                     "component set's own volume below the level is not in the catalog and is "
+                     "not subtracted", [])
 
 
 def volume_below_mL(solid: cq.Shape, level_mm: float) -> float:

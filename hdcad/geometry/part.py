@@ -75,6 +75,8 @@ class Neighbour:
     xy_mm: tuple[float, float] = (0.0, 0.0)
     direction: tuple[float, float, float] = (0.0, 0.0, 1.0)
     note: str = ""
+    body: object = None          # the true-size solid in part coordinates, when built
+    turns_with: str = ""         # rotation group if not its part's (e.g. "shaft")
 
 
 @dataclass
@@ -94,6 +96,8 @@ class Part:
     tolerances: list[GeometricTolerance] = field(default_factory=list)  # ISO 1101 datums/GD&T
     neighbours: list[Neighbour] = field(default_factory=list)       # bodies for the review assembly
     material: str = ""          # EN designation for the drawing title block, e.g. "S355J2 (EN 10025-2)"
+    turns_with: str = ""        # rotation group in the machine (parts of one group do not move
+    #                             against each other); "" = its own
 
     def solid(self) -> cq.Shape:
         return self.shape.val()

@@ -40,6 +40,10 @@ def break_outer_edges(part: cq.Workplane, outer_d: float | None = None,
     """Chamfer ``size`` × 45° on the edges of the outer outline (round Ø ``outer_d`` or
     square ``square`` centred on Z): the sharp outer corners a machinist breaks anyway."""
     def on_outline(edge) -> bool:
+        # a round outline's breaks are its full circles (cuts through the rim, such as a
+        # port's spot face, leave other edges on the cylinder that are not broken)
+        if square is None and edge.geomType() != "CIRCLE":
+            return False
         for t in (0.0, 0.5, 1.0):
             p = edge.positionAt(t)
             if square is not None:

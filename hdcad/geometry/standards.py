@@ -32,6 +32,19 @@ ISO_4762_LENGTHS_MM = (6, 8, 10, 12, 16, 20, 25, 30, 35, 40, 45, 50, 55, 60, 65,
 for every size, e.g. M3 stops at 30 and M24 starts at 40: ask the supplier)."""
 
 
+ISO_4762_LENGTH_RANGE_MM = {"M3": (5, 30), "M4": (6, 40), "M5": (8, 50), "M6": (10, 60),
+                            "M8": (12, 80), "M10": (16, 100), "M12": (20, 120),
+                            "M14": (25, 140), "M16": (25, 160), "M20": (30, 200),
+                            "M24": (40, 200)}
+"""ISO 4762 Table 1: range of nominal lengths l per thread (commercial lengths in between)."""
+
+
+def preferred_lengths(thread: str) -> tuple[int, ...]:
+    """ISO 4762 preferred lengths [mm] that exist for ``thread``."""
+    lo, hi = ISO_4762_LENGTH_RANGE_MM[thread]
+    return tuple(l for l in ISO_4762_LENGTHS_MM if lo <= l <= hi)
+
+
 def thread_diameter(thread: str) -> float:
     """Nominal diameter [mm] of an ISO metric coarse thread ("M5" → 5.0); ValueError naming
     the known threads if it is not in the ISO 261 table above."""

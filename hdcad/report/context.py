@@ -168,8 +168,24 @@ def check_families(checks: list[dict]) -> list[dict]:
 def part_rows(parts: list[dict]) -> list[dict]:
     return [{"name": p["name"], "mass": fmt(p["mass_kg"]),
              "dimensions": [(k.removesuffix("_mm").replace("_", " "), fmt(v))
-                            for k, v in p["dimensions"].items()], "notes": p["notes"]}
+                            for k, v in p["dimensions"].items()], "notes": p["notes"],
+             "material": p.get("material", ""),
+             "fits": [fit_row(f) for f in p.get("fits", [])],
+             "tolerances": [tolerance_row(t) for t in p.get("tolerances", [])]}
             for p in parts]
+
+
+def fit_row(f: dict) -> dict:
+    up, low = f["deviations_um"]
+    return {"feature": f["feature"], "fit": f"Ø{f['nominal_mm']:g} {f['code']}",
+            "limits": f"{up / 1000:+.3f} / {low / 1000:+.3f}", "mate": f["mate"],
+            "reason": f["reason"]}
+
+
+def tolerance_row(t: dict) -> dict:
+    value = "" if t["value_mm"] is None else f"{t['value_mm']:g}"
+    return {"feature": t["feature"], "characteristic": t["characteristic"],
+            "value": value, "datums": t["datums"]}
 
 
 def provenance(checks: list[dict]) -> list[dict]:

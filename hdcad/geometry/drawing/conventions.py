@@ -29,7 +29,8 @@ SCALES = (5.0, 2.0, 1.0, 1 / 2, 1 / 5, 1 / 10, 1 / 20)  # ISO 5455 preferred sca
 PNG_DPI = 150
 INK, HATCH_FILL = "#000000", "#E6E6E6"
 
-DIAMETER_KEYS = ("outer_diameter_mm", "square_mm", "pilot_recess_mm", "pilot_boss_diameter_mm",
+DIAMETER_KEYS = ("outer_diameter_mm", "square_mm", "body_diameter_mm", "pilot_recess_mm",
+                 "pilot_boss_diameter_mm", "gap_seal_journal_mm",
                  "pilot_diameter_mm", "spigot_recess_mm", "spigot_diameter_mm",
                  "hub_diameter_mm", "journal_diameter_mm", "bearing_seat_mm", "seal_recess_mm",
                  "bore_mm", "shaft_hole_mm")
