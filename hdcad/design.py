@@ -72,6 +72,24 @@ def oil_level_check(model: GearModel, parts: list, duty: Duty, options: DesignOp
     return oil_level(**args)
 
 
+def _geometry_options(model, catalog, options, checks: list, parts: list):
+    """With a ``motor:`` the chosen flange code and the motor shaft stand in for
+    motor_flange and input_shaft_mm; the motor checks are added to ``checks``."""
+    if model.family != "GH" or not options.motor:
+        return options
+    from dataclasses import replace
+
+    from .checks.motor import motor_fit, motor_shaft_reach
+    from .geometry.build import motor_choice
+    row, mismatch = motor_choice(model, catalog, options)
+    checks.append(motor_fit(row, mismatch, options.motor))
+    plate = next((p for p in parts if p.name == "motor_adapter"), None)
+    if plate is not None:
+        checks.append(motor_shaft_reach(row, options.motor, plate.dimensions["motor_shift_mm"]))
+    return replace(options, motor_flange=row["flange_code"],
+                   input_shaft_mm=options.motor["shaft_diameter_mm"])
+
+
 @dataclass
 class _Review:
     check: CheckResult
@@ -228,7 +246,8 @@ def run_design(model: GearModel, duty: Duty, options: DesignOptions, catalog: Ca
             from .geometry.clearance import inner_wall_clearance
         parts = clock.lap("build", build_parts(model, catalog, options))
         masses = {p.name: part_mass_kg(p, options.density_kg_m3) for p in parts}
-        evaluation.checks += geometric_checks(model, parts, options, catalog)
+        evaluation.checks += geometric_checks(model, parts, _geometry_options(
+            model, catalog, options, evaluation.checks, parts), catalog)
         evaluation.checks.append(inner_wall_clearance(model, parts, catalog, options))
         evaluation.checks.append(oil_level_check(model, parts, evaluation.duty, options,
                                                  catalog))

@@ -35,6 +35,7 @@ class DesignOptions:
     extra: dict = field(default_factory=dict)
     rules: dict = field(default_factory=dict)  # hdcad's own rules changed (checks/rules.py)
     drive: dict = field(default_factory=dict)  # FD-0 drive flange: key | bolts | pins
+    motor: dict = field(default_factory=dict)  # GH: the user's motor flange and shaft
     given: tuple[str, ...] = ()  # the options the design file set (the rest are defaults)
 
     @property
@@ -63,6 +64,8 @@ def parse_options(raw: Any) -> DesignOptions:
             from .errors import InputError
             raise InputError("drive.circle_mm", f"required for drive kind {drive.kind}")
         values["drive"] = drive.model_dump()
+    if values.get("motor") is not None:
+        values["motor"] = values["motor"].model_dump()
     if values.get("rules") is not None:
         values["rules"] = {k: getattr(values["rules"], k)
                            for k in values["rules"].model_fields_set}

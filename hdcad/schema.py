@@ -57,6 +57,9 @@ ResonanceBandRange = _num(0.01, 1.0, "")
 StaticSafetyMinRange = _num(1.0, 10.0, "")
 AdjustmentEfficiencyRange = _num(0.05, 1.0, "")
 RotaryOringSpeedRange = _num(0.05, 2.0, "m/s")
+MotorDiameterRange = _num(5.0, 500.0, "mm")
+MotorLengthRange = _num(0.5, 300.0, "mm")
+MotorShaftRange = _num(2.0, 100.0, "mm")
 InputShaftMmRange = _num(1.0, 200.0, "mm")
 WallMmRange = _num(2.0, 60.0, "mm")
 FrictionCoefficientRange = _num(0.05, 0.5, "")
@@ -146,6 +149,20 @@ class DriveIn(_Strict):
     circle_mm: DriveCircleRange | None = None
 
 
+class MotorIn(_Strict):
+    """The user's motor: flange (pilot, bolt circle, holes) and shaft, in mm."""
+    pilot_diameter_mm: MotorDiameterRange
+    pilot_length_mm: MotorLengthRange
+    bolt_circle_mm: MotorDiameterRange
+    bolt_count: Annotated[int, Field(ge=2, le=12, strict=True,
+                                     description="a whole number from 2 to 12")]
+    bolt_thread: Literal["M3", "M4", "M5", "M6", "M8", "M10", "M12", "M16"]
+    shaft_diameter_mm: MotorShaftRange
+    shaft_length_mm: MotorLengthRange
+    square_mm: MotorDiameterRange | None = None
+    holes: Literal["clearance", "tapped"] = "clearance"
+
+
 class DesignOptionsIn(_Strict):
     motor_flange: Annotated[str, Field(min_length=1, max_length=8, strict=True,
                                        description="a flange code such as KG")] | None = None
@@ -160,6 +177,7 @@ class DesignOptionsIn(_Strict):
     input_thrust_capacity_N: InputThrustCapacityNRange | None = None
     rules: RulesIn | None = None
     drive: DriveIn | None = None
+    motor: MotorIn | None = None
 
 
 def validated(model: type[T], raw: Any, root: str = "") -> T:

@@ -127,7 +127,7 @@ def geometric_checks(model: GearModel, parts: list, options: DesignOptions,
                      catalog: Catalog) -> list[CheckResult]:
     """input_bore and one bolt_pattern record per bolt circle of every part."""
     checks = [_bore_check(model, catalog, options)]
-    if model.family == "GH" and not catalog.has("gh_input_interface"):
+    if model.family == "GH" and not options.motor and not catalog.has("gh_input_interface"):
         checks.append(not_evaluated(
             "gh_interface", "Gear-head side of the motor flange", "geometry",
             "pilot, bolt circle and screws of the gear-head housing face",
@@ -139,7 +139,8 @@ def geometric_checks(model: GearModel, parts: list, options: DesignOptions,
     out_torque = known or 0.0
     for part in parts:
         # the motor flange carries the motor's reaction torque: output torque / R
-        torque = out_torque / model.ratio if part.name == "motor_flange" else out_torque
+        torque = (out_torque / model.ratio if part.name in ("motor_flange", "motor_adapter")
+                  else out_torque)
         for circle in part.bolt_circles:
             record = bolt_pattern(
                 f"{part.name}/{circle.name}", circle.diameter_mm, circle.count, circle.thread,

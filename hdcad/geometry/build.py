@@ -31,6 +31,8 @@ def build_parts(model: GearModel, catalog: Catalog, options: DesignOptions) -> l
             return _fd_casing(model, catalog, options)
         if model.family == "FD-0":
             return _fd_flanges(model, catalog, options)
+        if model.family == "GH" and options.motor:
+            return _gh_motor(model, catalog, options)
         if model.family == "GH":
             return [_gh_flange(model, catalog, options)]
         if model.family == "2A-GR" and not missing:
@@ -81,6 +83,32 @@ def _gh_flange(model, catalog, options) -> Part:
     return GHMotorFlange(model.series, model.size, code, catalog, options).build()
 
 
+def motor_choice(model, catalog, options) -> tuple[dict, list[str]]:
+    """The flange code for the user's motor and what keeps it from fitting directly."""
+    from .motor_adapter import Motor, choose_code
+    if options.motor_flange:
+        from .motor_adapter import mismatches
+        row = catalog.find("gh_motor_flange", series=model.series, size=model.size,
+                           flange_code=options.motor_flange)
+        if row is None:
+            raise ValueError(f"motor_flange {options.motor_flange!r} is not available for "
+                             f"{model.series}-{model.size}")
+        return row, mismatches(row, Motor.from_options(options))
+    return choose_code(catalog, model.series, model.size, Motor.from_options(options))
+
+
+def _gh_motor(model, catalog, options) -> list[Part]:
+    """The motor adapter plate when the user's motor does not fit a flange code directly;
+    the chosen code's own flange (seed motor side) when it does."""
+    from dataclasses import replace
+
+    from .motor_adapter import Motor, MotorAdapter
+    row, mismatch = motor_choice(model, catalog, options)
+    if not mismatch:
+        return [_gh_flange(model, catalog, replace(options, motor_flange=row["flange_code"]))]
+    return [MotorAdapter(row, Motor.from_options(options), catalog, options, mismatch).build()]
+
+
 def _component_set(model, catalog, options) -> list[Part]:
     from .component_housing import ComponentSetHousing
     return ComponentSetHousing(model.series, model.size, catalog, options).build_all()
@@ -107,4 +135,7 @@ def review_plan(model: GearModel, parts: list[Part]) -> dict | None:
     if model.family == "FD-2":
         from .fd_review import review_plan as fd_plan
         return fd_plan(parts)
+    if any(p.name == "motor_adapter" for p in parts):
+        return {"seed_zr": None, "angles": [45.0],
+                "title": "motor adapter between the flange code's motor side and the motor"}
     return None

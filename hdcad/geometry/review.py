@@ -49,6 +49,14 @@ def review_bodies(parts: list[Part]) -> list[Body]:
     return bodies
 
 
+def reach(bodies: list[Body]) -> float:
+    """Largest distance [mm] from the axis that any body's bounding box reaches (corners
+    included: a square flange reaches half its diagonal)."""
+    import math
+    return max(math.hypot(max(abs(b.xmin), abs(b.xmax)), max(abs(b.ymin), abs(b.ymax)))
+               for b in (body.solid.BoundingBox() for body in bodies))
+
+
 def _boxes_meet(a: cq.Shape, b: cq.Shape) -> bool:
     ba, bb = a.BoundingBox(), b.BoundingBox()
     return (ba.xmin <= bb.xmax and bb.xmin <= ba.xmax and ba.ymin <= bb.ymax
@@ -197,7 +205,7 @@ def oil_escapes(bodies: list[Body], seed_zr: tuple[float, float], angles: list[f
     import numpy as np
     from scipy import ndimage
     box = [b.solid.BoundingBox() for b in bodies]
-    r_max = max(max(abs(b.xmin), abs(b.xmax), abs(b.ymin), abs(b.ymax)) for b in box) + 2
+    r_max = reach(bodies) + 2
     z_range = (min(b.zmin for b in box) - 2, max(b.zmax for b in box) + 2)
     out = {}
     for angle in angles:
@@ -226,8 +234,9 @@ def run_review(parts: list[Part], plan: dict, folder=None) -> dict:
                                 for a, b, v in interferences(bodies)],
               "bearings": bearing_stops(bodies), "seals": seal_journals(bodies),
               "screws": screw_engagements(bodies),
-              "oil_escapes": {f"{a:g}": e for a, e in
-                              oil_escapes(bodies, plan["seed_zr"], plan["angles"]).items()},
+              "oil_escapes": ({} if plan["seed_zr"] is None else
+                              {f"{a:g}": e for a, e in oil_escapes(
+                                  bodies, plan["seed_zr"], plan["angles"]).items()}),
               "section_angle_deg": plan["angles"][0], "files": []}
     if folder is not None:
         from .review_render import render_section

@@ -12,7 +12,8 @@ COLORS = {"part": "#b8c0cc", "bearing": "#5b8bd9", "seal": "#d9534f", "oring": "
           "shaft": "#e8d8a8", "motor": "#c9a0dc", "other": "#999999"}
 LEGEND = {"part": "generated part", "bearing": "bearing", "seal": "seal / O-ring",
           "ring": "retaining ring", "screw": "screw", "plug": "plug",
-          "gear": "gear (catalog outline)", "shaft": "user's shaft"}
+          "gear": "gear (catalog outline)", "shaft": "user's shaft",
+          "motor": "motor envelope"}
 
 
 def render_section(bodies, angle_deg: float, path: Path, title: str) -> Path:
@@ -22,9 +23,8 @@ def render_section(bodies, angle_deg: float, path: Path, title: str) -> Path:
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     from matplotlib.patches import Polygon
-    r_max = max(max(abs(v) for v in (b.solid.BoundingBox().xmin, b.solid.BoundingBox().xmax,
-                                     b.solid.BoundingBox().ymin, b.solid.BoundingBox().ymax))
-                for b in bodies) + 2
+    from .review import reach
+    r_max = reach(bodies) + 2
     fig, ax = plt.subplots(figsize=(9, 5.4), dpi=150)
     used = set()
     for body in bodies:

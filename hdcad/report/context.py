@@ -121,11 +121,14 @@ def option_rows(options: dict) -> list[dict]:
     rows = [{"key": k, "unit": "" if v is None else OPTION_UNITS.get(k, ""),
              "default": k not in given,
              "value": OPTION_NONE.get(k, "—") if v is None else fmt(v)}
-            for k, v in options.items() if k not in ("extra", "given", "rules", "drive")]
-    drive = options.get("drive") or {}
-    rows.append({"key": "drive", "unit": "", "default": "drive" not in given,
-                 "value": ", ".join(f"{k} {fmt(v)}" for k, v in drive.items() if v is not None)
-                 or "none (the user fastens the gear)"})
+            for k, v in options.items()
+            if k not in ("extra", "given", "rules", "drive", "motor")]
+    for key, empty in (("drive", "none (the user fastens the gear)"),
+                       ("motor", "not given (the flange code's own motor side)")):
+        block = options.get(key) or {}
+        rows.append({"key": key, "unit": "", "default": key not in given,
+                     "value": ", ".join(f"{k} {fmt(v)}" for k, v in block.items()
+                                        if v is not None) or empty})
     changed = options.get("rules") or {}
     # hdcad's own rules (checks/rules.py): listed so a reviewer sees which were changed
     rows += [{"key": f"rules.{k}", "unit": "", "default": k not in changed,
