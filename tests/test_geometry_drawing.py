@@ -31,7 +31,9 @@ TOL = 0.01  # mm: the drawing's promise (a dimension may differ from the solid b
 SHEET = (250.0, 150.0)  # mm, the sheet size the task asks for
 CASES = [("FD-25-80-2", None), ("FD-25-80-0", None), ("CSF-45-120-GH", "PA"),
          ("CSF-45-120-GH", "PG")]  # PA: round flange; PG: square flange in table 064-1
-LABEL = re.compile(r"^(\d+) × Ø([\d.]+) on Ø([\d.]+) \((M\d+)\)$")
+# "6× M5×8 (drill Ø4.2) on Ø80" (tapped) or "6× Ø4.5 for M4 on Ø75" (clearance)
+LABEL = re.compile(r"^(\d+)× (?:(M\d+)×[\d.]+ \(drill Ø([\d.]+)\)|Ø([\d.]+) for (M\d+)) "
+                   r"on Ø([\d.]+)$")
 TIMES: list[tuple[str, float]] = []
 
 
@@ -101,7 +103,7 @@ def test_svg_has_catalog_dimensions_and_bolt_labels(drawn, index):
     outer, diameters, circles = _expected(code, flange, part)
     for label in ([outer] if outer else []) + diameters:
         assert label in strings
-    found = sorted(tuple(float(g) if i in (1, 2) else g for i, g in enumerate(m.groups()))
+    found = sorted((m[1], float(m[3] or m[4]), float(m[6]), m[2] or m[5])
                    for m in map(LABEL.match, strings) if m)
     want = sorted((str(n), float(h), float(bc), t) for n, h, bc, t in circles)
     assert found == want

@@ -142,7 +142,12 @@ def length_dimensions(part: Part, m: Measured) -> list[Dimension]:
 
 
 def bolt_circle_label(bc: BoltCircle) -> str:
-    return f"{bc.count} × Ø{bc.hole_diameter_mm:g} on Ø{bc.diameter_mm:g} ({bc.thread})"
+    """ISO 129-1 style callout: tapped holes as thread × depth (``6× M5×8``), clearance
+    holes with the screw they pass (``6× Ø4.5 for M4``), then the circle."""
+    if bc.kind == "tapped" and bc.depth_mm:
+        return (f"{bc.count}× {bc.thread}×{bc.depth_mm:g} (drill Ø{bc.hole_diameter_mm:g}) "
+                f"on Ø{bc.diameter_mm:g}")
+    return f"{bc.count}× Ø{bc.hole_diameter_mm:g} for {bc.thread} on Ø{bc.diameter_mm:g}"
 
 
 def bolt_circle_holes(part: Part, bc: BoltCircle, m: Measured) -> list[tuple[float, float]]:
