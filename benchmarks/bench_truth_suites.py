@@ -14,6 +14,9 @@ the category, columns: effects named) and the acceptance figures:
 
 Run: python benchmarks/bench_truth_suites.py [--suite truths/truth_b.py ...] [--per-cell 4]
      [--seed 7] [--jobs 2] [--kind torsion] [--sindy]
+
+``--sindy`` scores PySINDy's STLSQ over the same residual library beside reconcile
+(``benchmarks/sindy_baseline.py``; ``pip install -e ".[bench]"``).
 """
 
 from __future__ import annotations
@@ -62,10 +65,13 @@ _CASES: dict = {}
 
 
 def _run(args):
-    suite_path, seed, per_cell, index = args
+    suite_path, seed, per_cell, index, *method = args
     key = (suite_path, seed, per_cell)
     if key not in _CASES:  # each worker generates the suite once
         _CASES[key] = load_suite(Path(suite_path)).generate_cases(seed, CATALOG_DIR, per_cell)
+    if method == ["sindy"]:
+        from sindy_baseline import sindy_case
+        return index, sindy_case(_CASES[key][index])
     return index, reconcile_case(_CASES[key][index])
 
 
@@ -140,6 +146,9 @@ def main() -> None:
     parser.add_argument("--kind", action="append")
     parser.add_argument("--category", action="append")
     parser.add_argument("--verbose", action="store_true", help="print every miss")
+    parser.add_argument("--sindy", action="store_true",
+                        help="also score PySINDy STLSQ over the same residual library "
+                             "(benchmarks/sindy_baseline.py; needs pip install pysindy)")
     args = parser.parse_args()
     suites = args.suite or sorted((ROOT / "truths").glob("truth_*.py"))
     for path in suites:
@@ -155,6 +164,14 @@ def main() -> None:
         summary(rows, "all")
         for kind in sorted({r["kind"] for r in rows}):
             summary([r for r in rows if r["kind"] == kind], kind)
+        if args.sindy:
+            with ProcessPoolExecutor(args.jobs) as pool:
+                plain = dict(pool.map(_run, [j + ("sindy",) for j in jobs], chunksize=4))
+            side = [score(cases[i], plain[i]) for i in chosen]
+            print("  side by side: PySINDy STLSQ over the same residual library")
+            summary(side, "sindy all")
+            for kind in sorted({r["kind"] for r in side}):
+                summary([r for r in side if r["kind"] == kind], f"sindy {kind}")
         for kind in sorted({r["kind"] for r in rows}):
             confusion(rows, kind)
         if args.verbose:

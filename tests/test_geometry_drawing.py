@@ -147,7 +147,8 @@ def _one_part(code, flange=None, name=None):
 
 
 @pytest.mark.parametrize("key, delta", [("outer_diameter_mm", 0.5), ("seal_recess_mm", -0.02),
-                                        ("pilot_recess_mm", 1.0), ("thickness_mm", 0.1)])
+                                        ("pilot_recess_mm", 1.0), ("thickness_mm", 0.1),
+                                        ("bearing_seat_z_mm", 0.5)])
 def test_wrong_dimension_raises(tmp_path, key, delta):
     part = _one_part("FD-25-80-2", name="casing_half_S")
     step = tmp_path / "part.step"
@@ -210,3 +211,13 @@ def test_clip_half_cuts_at_the_axis():
     assert len(upper) == 2 and len(lower) == 2
     assert all((p[:, 1] >= 0).all() for p in upper) and all((p[:, 1] <= 0).all() for p in lower)
     assert length == pytest.approx(3 * 2 ** 0.5)
+
+
+def test_axial_positions_are_dimensioned_from_the_mating_face(drawn):
+    """The casing's functional faces along the axis (pilot floor, bearing seat, shoulder,
+    seal, front ring) are drawn as parallel dimensions from z = 0, each checked against a
+    face of the STEP solid."""
+    code, _, part, _, result = next(d for d in drawn if d[2].name == "casing_half_D")
+    strings = _svg_strings(result["svg"])
+    for key in ("pilot_floor_z_mm", "bearing_seat_z_mm", "shoulder_z_mm", "seal_z_mm"):
+        assert f"{part.dimensions[key]:g}" in strings, key

@@ -109,3 +109,19 @@ def test_review_step_reimports_with_every_body(tmp_path):
     for part in parts:
         assert round(part.solid().Volume(), 1) in volumes
     assert (tmp_path / "figures" / "review_section.png").stat().st_size > 10_000
+
+
+@pytest.mark.parametrize("size", SIZES)
+def test_fd0_drive_flanges_mate_with_the_unit_outline(size):
+    """Both drive flanges on the FD-0 unit's catalog outline (table 311-1): no overlap, the
+    casing screws engage ≥ 1·d and stop short of the M thread depth."""
+    from hdcad.geometry.build import build_parts
+    from hdcad.models import resolve
+    ratio = CATALOG.rows("fd_ratios", size=size)[0]["ratio"]
+    parts = build_parts(resolve(f"FD-{size}-{ratio}-0", CATALOG), CATALOG, DesignOptions())
+    bodies = review.review_bodies(parts)
+    assert review.interferences(bodies) == []
+    screws = review.screw_engagements(bodies)
+    assert len(screws) == 2 * CATALOG.find("fd0_dimensions", size=size)["L_count"]
+    for s in screws:
+        assert s["engaged_min"] <= s["engaged"] <= s["thread_depth"]

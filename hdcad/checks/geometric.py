@@ -135,6 +135,9 @@ def geometric_checks(model: GearModel, parts: list, options: DesignOptions,
             "pilot depth, bolt circle, bolt count and thread, outline, O-ring); the seeds do "
             "not give it (lost figures 053-1 … 064-1), so the flange is NOT FOR MANUFACTURE",
             source="seed 003 tables 053-1 … 064-1 (motor side only)"))
+    if model.family == "GH":
+        from .motor import gh_mounting_plate
+        checks.append(gh_mounting_plate(catalog.has("gh_mounting_interface")))
     known = momentary_torque_Nm(model)
     out_torque = known or 0.0
     for part in parts:

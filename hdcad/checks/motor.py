@@ -56,3 +56,22 @@ def motor_shaft_reach(row: dict, motor: dict, shift_mm: float) -> CheckResult:
     inputs["L_engage"] = Quantity(need, "mm", "overlay gh_motor_flange")
     return compared("motor_shaft_reach", title, "geometry", formula, inputs,
                     motor["shaft_length_mm"] - shift_mm, need, "mm", ">=", SOURCE)
+
+
+MOUNTING_FIELDS = ("pilot_diameter_mm", "bolt_circle_mm", "bolt_count", "bolt_thread")
+
+
+def gh_mounting_plate(catalog_has_interface: bool) -> CheckResult:
+    """The gear head's mounting plate on the machine needs the gear head's own mounting
+    interface (output-side pilot and bolt pattern), which the seeds do not give."""
+    title = "Mounting plate of the gear head on the machine"
+    formula = "plate from the gear head's mounting interface"
+    if not catalog_has_interface:
+        return not_evaluated("gh_mounting_plate", title, "geometry", formula,
+                             "the gear head's mounting interface (overlay table "
+                             "gh_mounting_interface: " + ", ".join(MOUNTING_FIELDS)
+                             + "); the seeds' outline figures 050/058 are lost",
+                             source="seed 003 (outline drawings not in the text)")
+    return not_evaluated("gh_mounting_plate", title, "geometry", formula,
+                         "a mounting-plate generator (the interface is given, the plate is "
+                         "not built yet)", source="overlay gh_mounting_interface")

@@ -63,10 +63,13 @@ def _fd_casing(model, catalog, options) -> list[Part]:
 def _fd_flanges(model, catalog, options) -> list[Part]:
     from .flanges import FDDriveFlange
     width = catalog.find("fd0_dimensions", size=model.size)["D_mm"]  # unit width (311-1)
+    from .fd0_review import flange_neighbours
     parts = []
     for side, flip, z in (("S", True, -width / 2), ("D", False, width / 2)):
-        part = FDDriveFlange(model.size, catalog, options).build()
+        maker = FDDriveFlange(model.size, catalog, options)
+        part = maker.build()
         part.name, part.flip, part.offset_z_mm = f"drive_flange_{side}", flip, z
+        part.neighbours = flange_neighbours(maker, with_unit=side == "D")
         parts.append(part)
     return parts
 
@@ -135,6 +138,9 @@ def review_plan(model: GearModel, parts: list[Part]) -> dict | None:
     if model.family == "FD-2":
         from .fd_review import review_plan as fd_plan
         return fd_plan(parts)
+    if model.family == "FD-0":
+        return {"seed_zr": None, "angles": [0.0],
+                "title": "FD-0 unit (catalog outline) with both drive flanges and screws"}
     if any(p.name == "motor_adapter" for p in parts):
         return {"seed_zr": None, "angles": [45.0],
                 "title": "motor adapter between the flange code's motor side and the motor"}

@@ -180,7 +180,8 @@ class FDCasingHalf:
     def _dimensions(self) -> dict[str, float]:
         lay, fd0, fd2 = self.lay, self.fd0, self.fd2
         dims = {"outer_diameter_mm": lay.outer_d, "body_diameter_mm": lay.body_d,
-                "front_length_mm": lay.front_length, "pilot_recess_mm": fd2["A_g7_mm"],
+                "front_length_mm": lay.front_length, "front_z_mm": lay.front_length,
+                "pilot_floor_z_mm": lay.pilot_depth, "pilot_recess_mm": fd2["A_g7_mm"],
                 "pilot_depth_mm": lay.pilot_depth, "spigot_recess_mm": fd0["B_H7_mm"],
                 "spigot_depth_mm": SPIGOT_DEPTH_MM, "bearing_seat_mm": lay.bearing.D,
                 "bearing_seat_z_mm": lay.bearing_z, "bearing_pair_width_mm": 2 * lay.bearing.B,

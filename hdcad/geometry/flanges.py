@@ -142,7 +142,15 @@ class FDDriveFlange:
         return Part(name="drive_flange", shape=shape,
                     color=DRIVE_FLANGE_COLOR, dimensions=self._dimensions(),
                     bolt_circles=[self._bolt_circle()] + circles,
-                    notes=self._notes() + notes + [EDGE_NOTE])
+                    notes=self._notes() + notes + [EDGE_NOTE], fits=self._fits(),
+                    material="S355J2 (EN 10025-2)", turns_with="unit")
+
+    def _fits(self) -> list:
+        return [iso286_fit(self.catalog, "pilot boss", self.pilot, "h7",
+                           "FD-0 casing recess φB H7 (table 311-1)", "centring on the unit"),
+                iso286_fit(self.catalog, "gear/pulley hub", self.pilot, "g6",
+                           "the user's gear bore H7", "slide fit, the drive feature carries "
+                           "the torque")]
 
     def _bolt_circle(self) -> BoltCircle:
         # depth = thread engagement the casing offers (311-1 M = thread × depth)

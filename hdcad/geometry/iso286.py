@@ -1,5 +1,5 @@
-"""ISO 286 limits of the fits the generated parts carry (holes H7, H8, M7; shafts g6, k5,
-h11, f7), from catalog tables ``iso286_h7_g6`` and ``iso286_grades_deviations``.
+"""ISO 286 limits of the fits the generated parts carry (holes H7, H8, M7; shafts g6, h7,
+k5, h11, f7), from catalog tables ``iso286_h7_g6`` and ``iso286_grades_deviations``.
 
 References
 ----------
@@ -11,7 +11,7 @@ from __future__ import annotations
 from ..catalog import Catalog
 from .part import Fit
 
-CODES = ("H7", "H8", "M7", "g6", "k5", "h11", "f7")
+CODES = ("H7", "H8", "M7", "g6", "h7", "k5", "h11", "f7")
 
 
 def _row(catalog: Catalog, table: str, nominal_mm: float) -> dict:
@@ -31,6 +31,7 @@ def deviations_um(catalog: Catalog, nominal_mm: float, code: str) -> tuple[float
              "M7": lambda: (0.0, -a["IT7_um"]),
              "g6": lambda: (-a["g_es_below_zero_um"], -a["g_es_below_zero_um"] - a["IT6_um"]),
              "k5": lambda: (b["k_ei_um"] + b["IT5_um"], b["k_ei_um"]),
+             "h7": lambda: (0.0, -a["IT7_um"]),
              "h11": lambda: (0.0, -b["IT11_um"]),
              "f7": lambda: (-b["f_es_below_zero_um"], -b["f_es_below_zero_um"] - a["IT7_um"])}
     if code not in table:

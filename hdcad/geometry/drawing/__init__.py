@@ -33,7 +33,7 @@ from ..part import Part
 from .conventions import EDGE_NOTE, GENERAL_TOLERANCE
 from .measure import load_step_solid, section_extent
 from .dimensions import (bolt_circle_holes, bolt_circle_label, diameter_dimensions, Dimension,
-                         length_dimensions, Measured, outer_dimension)
+                         length_dimensions, Measured, outer_dimension, axial_dimensions)
 from .paper import clip_half, Sheet
 from .layout import assign_sides, layout
 from .views import dimension_side_view, draw_front, draw_side, label_bolt_circles, title_strip
@@ -42,7 +42,7 @@ from .views import dimension_side_view, draw_front, draw_side, label_bolt_circle
 def verified_dimensions(part: Part, m: Measured) -> list[Dimension]:
     """The part's main dimensions, each checked against the measured solid."""
     return ([outer_dimension(part, m)] + diameter_dimensions(part, m)
-            + length_dimensions(part, m))
+            + length_dimensions(part, m) + axial_dimensions(part, m))
 
 
 def drawing_notes(part: Part, mass_kg: float | None = None, material: str = "") -> list[str]:

@@ -36,4 +36,8 @@ DIAMETER_KEYS = ("outer_diameter_mm", "square_mm", "body_diameter_mm", "pilot_re
                  "bore_mm", "shaft_hole_mm")
 """Part.dimensions keys drawn as diameters in the side view (those a part has)."""
 OUTER_KEYS = ("outer_diameter_mm", "square_mm")
+AXIAL_KEYS = ("front_z_mm", "pilot_floor_z_mm", "bearing_seat_z_mm", "shoulder_z_mm",
+              "seal_z_mm")
+"""Part.dimensions keys that are positions of faces along the axis from z = 0 (the mating
+face): drawn as parallel dimensions from it."""
 BORE_KEYS = ("bore_mm", "shaft_hole_mm")

@@ -10,7 +10,7 @@ import cadquery as cq
 import numpy as np
 
 from ..part import BoltCircle, Part
-from .conventions import BORE_KEYS, DIAMETER_KEYS, OUTER_KEYS, TOLERANCE_MM
+from .conventions import AXIAL_KEYS, BORE_KEYS, DIAMETER_KEYS, OUTER_KEYS, TOLERANCE_MM
 from .measure import (_inside, axial_features, Cylinder, section_extent, xz_section, z_cylinders,
                       z_planes)
 
@@ -138,6 +138,23 @@ def length_dimensions(part: Part, m: Measured) -> list[Dimension]:
         if not _agree(near, t):
             raise _mismatch(part, "thickness_mm", t, "has its nearest face at z =", near)
         out.insert(0, Dimension("thickness_mm", f"{t:g}", t, near, "length", 0.0, near))
+    return out
+
+
+def axial_dimensions(part: Part, m: Measured) -> list[Dimension]:
+    """Positions of the part's functional faces along the axis, dimensioned in parallel
+    from the mating face z = 0 (ISO 129-1 parallel dimensioning from a datum): each must be a
+    face of the solid normal to Z."""
+    out = []
+    for key in AXIAL_KEYS:
+        z = part.dimensions.get(key)
+        if z is None or _agree(z, m.box.zmax) or _agree(z, 0.0):
+            continue
+        near = min(m.planes, key=lambda p: abs(p - z))
+        if not _agree(near, z):
+            raise _mismatch(part, key, z, "has its nearest face normal to the axis at z =",
+                            near)
+        out.append(Dimension(key, f"{z:g}", z, near, "length", 0.0, near))
     return out
 
 

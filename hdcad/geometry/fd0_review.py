@@ -1,0 +1,64 @@
+"""Neighbour bodies of the FD-0 drive flanges for the review assembly: the FD-0 unit as its
+catalog outline (table 311-1: φA × D, the φB recess and the L tapped holes M on φK at each
+face, the WG hub φC standing out to the flange bores) and the ISO 4762 casing screws."""
+
+from __future__ import annotations
+
+from ..checks.bolts import MIN_ENGAGEMENT
+from .part import Neighbour
+from .primitives import cylinder, ring_points
+from .standards import ISO_261_PITCH_MM, ISO_4762_HEAD_MM, preferred_lengths, thread_diameter
+
+RECESS_MM = 2.0   # φB recess depth: not in table 311-1 (figure lost); the smallest FD-0 H
+
+
+def screw_length(thread: str, grip: float, depth: float) -> tuple[int | None, float]:
+    """Longest ISO 4762 length that engages ≥ 1·d in steel and does not bottom."""
+    d = thread_diameter(thread)
+    fits = [l for l in preferred_lengths(thread)
+            if MIN_ENGAGEMENT["steel"] * d <= l - grip <= depth]
+    length = max(fits, default=None)
+    return length, (length - grip if length else 0.0)
+
+
+def flange_neighbours(flange, with_unit: bool) -> list[Neighbour]:
+    """Screws of one drive flange; the unit outline once (``with_unit``), in the flange's
+    frame (mating face z = 0, the unit towards −z)."""
+    row, thread = flange.row, flange.thread
+    grip = flange.thickness - flange.cbore_depth
+    length, engaged = screw_length(thread, grip, row["M_depth_mm"])
+    out = []
+    if length is not None:
+        dk, k = ISO_4762_HEAD_MM[thread]
+        minor = thread_diameter(thread) - ISO_261_PITCH_MM[thread]
+        seat = grip
+        dims = {"d": thread_diameter(thread), "l": length, "grip": grip, "engaged": engaged,
+                "thread_depth": row["M_depth_mm"],
+                "engaged_min": MIN_ENGAGEMENT["steel"] * thread_diameter(thread)}
+        for x, y in ring_points(flange.ring, flange.count, 0.0):
+            body = cylinder(dk, seat, seat + k, x, y).fuse(
+                cylinder(minor, seat - length, seat + 0.01, x, y))
+            out.append(Neighbour("screw", f"ISO 4762 {thread}×{length}", dims, seat,
+                                 xy_mm=(x, y), body=body.Solids()[0]))
+    if with_unit:
+        out.append(_unit(flange))
+    return out
+
+
+def _unit(flange) -> Neighbour:
+    row = flange.row
+    width, minor = row["D_mm"], thread_diameter(flange.thread) - ISO_261_PITCH_MM[flange.thread]
+    body = cylinder(row["A_mm"], -width, 0.0)
+    cuts = [cylinder(row["B_H7_mm"], -RECESS_MM, 0.5),
+            cylinder(row["B_H7_mm"], -width - 0.5, -width + RECESS_MM),
+            cylinder(row["N_H7_mm"], -width - 1, 1)]
+    for x, y in ring_points(flange.ring, flange.count, 0.0):
+        cuts += [cylinder(minor, -row["M_depth_mm"], 0.5, x, y),
+                 cylinder(minor, -width - 0.5, -width + row["M_depth_mm"], x, y)]
+    # the WG hub φC (= bearing bore) stands in the recess at each face, inside the flange bore
+    hub = [cylinder(row["C_mm"], -RECESS_MM, 0.0), cylinder(row["C_mm"], -width,
+                                                               -width + RECESS_MM)]
+    body = body.cut(*cuts).fuse(*[h.cut(cylinder(row["N_H7_mm"], -width - 1, 1)) for h in hub])
+    return Neighbour("gear", f"FD-{flange.size}-0 unit (catalog outline, table 311-1)",
+                     {"A": row["A_mm"], "D": width}, -width, body=body.Solids()[0],
+                     turns_with="unit")
