@@ -67,12 +67,27 @@ def test_parts_round_trip_through_step(series, size, tmp_path):
     # housing: pilot recess on the CS φ, cavity at least the recommended wall, outer Ø
     part, shape, cylinders = shapes["housing"]
     box = shape.BoundingBox()
-    assert box.xlen == pytest.approx(outline["cs_outer_diameter_mm"] + 2 * options.wall_mm,
-                                     abs=TOL)
-    assert box.zmin == pytest.approx(-part.dimensions["pilot_depth_mm"], abs=TOL)
-    assert box.zmax == pytest.approx(part.dimensions["z_max_mm"], abs=TOL)
+    dims = part.dimensions
+    assert box.xlen == pytest.approx(dims["mounting_flange_mm"], abs=TOL)  # mounting flange
+    assert box.zmin == pytest.approx(-dims["pilot_depth_mm"], abs=TOL)
+    assert box.zmax == pytest.approx(dims["z_max_mm"], abs=TOL)
     assert box.zmin < -outline["cs_width_mm"]  # the recess holds the whole CS width
     central = central_diameters(cylinders)
+    # the body around the CS: CS φ + 2 × wall_mm; the mounting spigot and its holes
+    assert any(abs(d - (outline["cs_outer_diameter_mm"] + 2 * options.wall_mm)) <= TOL
+               for d in central)
+    assert any(abs(d - dims["mounting_spigot_mm"]) <= TOL for d in central)
+    mount = part.bolt_circles[1]
+    holes = holes_on_circle(cylinders, mount.diameter_mm, mount.hole_diameter_mm)
+    assert mount.name == "mounting" and len(holes) == mount.count
+    # every mounting hole centre ≥ 1.5·d from the flange edge (HOUSING_RULES §4)
+    d = float(mount.thread[1:])
+    assert (dims["mounting_flange_mm"] - mount.diameter_mm) / 2 >= 1.5 * d - 1e-9
+    # output bearing pair: DIN 472 groove on the cavity side, seat 2 bearings + spacer long
+    ret = set_.retention["out"]
+    assert any(abs(d - ret.ring_bore.d2) <= TOL for d in central)
+    assert dims["shoulder_z_mm"] - dims["bearing_pair_z_mm"] == pytest.approx(
+        3 * ret.bearing.B)
     assert any(abs(d - outline["cs_outer_diameter_mm"]) <= TOL for d in central)
     cavity = part.dimensions["cavity_diameter_mm"]
     assert any(abs(d - cavity) <= TOL for d in central)
@@ -208,6 +223,7 @@ def test_geometric_checks_cover_both_bolt_circles():
         checks = geometric_checks(model, parts, DesignOptions(), CATALOG)
         bolts = {c.title: c for c in checks if c.id == "bolt_pattern"}
         assert set(bolts) == {"Bolt circle housing/cs_screws",
+                              "Bolt circle housing/mounting",
                               "Bolt circle input_cover/cs_screws_cover",
                               "Bolt circle output_flange/fs_screws"}
         assert all(c.status in status for c in bolts.values()), code

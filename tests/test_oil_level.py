@@ -124,7 +124,8 @@ def test_component_set_cavity_is_empty_space_and_holds_the_oil(catalog):
     assert 0 < below < total / 2
     # the level is read against the seal lips of the larger shaft (output journal)
     housing = next(p for p in parts if p.name == "housing").dimensions
-    assert cavity.seal_shaft_mm == pytest.approx(housing["shaft_hole_mm"] - 2.0)
+    assert cavity.seal_shaft_mm == pytest.approx(housing["seal_shaft_mm"])
+    assert housing["seal_shaft_mm"] == parts[-1].dimensions["journal_diameter_mm"]
 
 
 @pytest.mark.parametrize("bearing_od, says", [(55.0, "dip into the bath"),

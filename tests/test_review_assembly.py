@@ -125,3 +125,31 @@ def test_fd0_drive_flanges_mate_with_the_unit_outline(size):
     assert len(screws) == 2 * CATALOG.find("fd0_dimensions", size=size)["L_count"]
     for s in screws:
         assert s["engaged_min"] <= s["engaged"] <= s["thread_depth"]
+
+
+def test_2a_gr_review_on_the_test_overlay():
+    """2A-GR housing, cover and output flange on the invented test overlay (not catalog
+    data): no overlap, four bearings stopped on both faces (two-point support of input and
+    output), both lip seals on journals, CS screws engaged, oil closed in."""
+    from pathlib import Path
+
+    from hdcad.catalog import load_catalog
+    from hdcad.geometry.build import build_parts, review_plan
+    from hdcad.models import resolve
+    overlay = load_catalog(Path(__file__).parent / "data" /
+                           "overlay_2a_gr_TEST_DATA_NOT_CATALOG.yaml")
+    model = resolve("CSF-40-120-2A-GR", overlay)
+    parts = build_parts(model, overlay, DesignOptions())
+    result = review.run_review(parts, review_plan(model, parts))
+    assert result["interferences"] == []
+    assert len(result["bearings"]) == 4
+    assert all(row[f] for row in result["bearings"]
+               for f in ("inner_low", "inner_high", "outer_low", "outer_high"))
+    assert [s["covered"] >= 0.999 for s in result["seals"]] == [True, True]
+    assert result["screws"] and all(s["engaged_min"] <= s["engaged"] <= s["thread_depth"]
+                                    for s in result["screws"])
+    assert not any(result["oil_escapes"].values())
+    bodies = review.review_bodies(parts)
+    without = [b for b in bodies if b.kind != "seal"]
+    assert any(review.oil_escapes(without, review_plan(model, parts)["seed_zr"],
+                                  [0.0]).values())

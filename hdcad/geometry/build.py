@@ -138,6 +138,9 @@ def review_plan(model: GearModel, parts: list[Part]) -> dict | None:
     if model.family == "FD-2":
         from .fd_review import review_plan as fd_plan
         return fd_plan(parts)
+    if model.family == "2A-GR":
+        from .component_review import review_plan as set_plan
+        return set_plan(parts)
     if model.family == "FD-0":
         return {"seed_zr": None, "angles": [0.0],
                 "title": "FD-0 unit (catalog outline) with both drive flanges and screws"}

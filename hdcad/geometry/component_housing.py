@@ -40,14 +40,17 @@ import cadquery as cq
 
 from ..catalog import Catalog
 from ..design_options import DesignOptions
-from .housing_common import (BEARING_TABLE, CBORE_SINK_MM, EDGE_MARGIN_MM, MIN_FLOOR_MM,
-                             SEAL_DEPTH_ALLOWANCE_MM, SEAL_TABLE, SHAFT_CLEARANCE_MM,
+from .housing_common import (BEARING_TABLE, CBORE_SINK_MM, MIN_FLOOR_MM, SEAL_TABLE,
                              bearing_dimensions, check_ring, seal_dimensions)
+from .component_review import (cover_fits, cover_neighbours, flange_fits, flange_neighbours,
+                               housing_fits, housing_neighbours)
+from .component_support import Retention
 from .flanges import TAP_RUNOUT_PITCHES
 from .part import BoltCircle, Part
 from .primitives import cylinder, ring_points, single_solid
 from .standards import (DIN_974_1_CBORE_MM, ISO_261_PITCH_MM, ISO_273_MEDIUM_MM,
-                        ISO_4762_HEAD_MM, TAP_DRILL_MM, thread_diameter)
+                        ISO_4762_HEAD_MM, TAP_DRILL_MM, preferred_lengths, thread_diameter)
+from ..checks.bolts import MIN_ENGAGEMENT
 
 OUTLINE, HOUSING = "component_outline", "component_housing"
 SERIES = ("CSF", "CSG")
@@ -73,6 +76,14 @@ FLANGE_STEP_MM = 3.0        # journal at least 3 mm radially inside the FS-boss 
 AXIAL_GAP_MM = 1.0          # running gap: flange ↔ end wall, WG hub ↔ cover
 DEFAULT_FLANGE_RADIUS_MM = 1.0  # p.024 guideline 6 asks for a radius; its size is in the
 #                                 catalog's recommended dimensions (overlay column), else this
+EDGE_FACTOR = 1.5           # hole centre ≥ 1.5·d from the mounting flange's edge (HOUSING_RULES §4)
+RIM_MM = 3.0                # wall of the mounting spigot around the seal bore
+MOUNT_SPIGOT_MM = 3.0       # centring spigot into the machine frame
+MOUNT_START_DEG = 15.0      # mounting holes clocked off the CS screws
+MOUNT_THREADS = {"M3": "M4", "M4": "M5", "M5": "M6", "M6": "M8", "M8": "M10", "M10": "M12",
+                 "M12": "M16", "M14": "M16", "M16": "M20"}
+MATERIALS = {"steel": "S355J2 (EN 10025-2)", "aluminium": "EN AW-6082 T6 (EN 573-3)",
+             "cast_iron": "EN-GJL-250 (EN 1561)"}
 COLORS = {"housing": (0.62, 0.66, 0.72), "input_cover": (0.52, 0.58, 0.68),
           "output_flange": (0.80, 0.62, 0.30)}
 
@@ -119,7 +130,7 @@ class ComponentSetHousing:
             sizes = ", ".join(map(str, self.sizes(catalog, series))) or "none"
             raise ValueError(f"{series}-{size}-2A-GR needs rows in {', '.join(missing)} "
                              f"(catalog overlay); sizes with both tables: {sizes}")
-        self.series, self.size = series, size
+        self.series, self.size, self.catalog = series, size, catalog
         self.label = f"{series}-{size}-2A-GR"
         self.outline = catalog.find(OUTLINE, series=series, size=size)
         self.rec = catalog.find(HOUSING, series=series, size=size)
@@ -178,6 +189,8 @@ class ComponentSetHousing:
             self.out_d, self.out_D, self.out_B = bearing_dimensions(catalog, self.out_bearing)
             self.in_seal = seal_dimensions(catalog, self.in_d)
             self.out_seal = seal_dimensions(catalog, self.out_d)
+            self.retention = {side: Retention(catalog, b) for side, b in
+                              (("out", self.out_bearing), ("in", self.in_bearing))}
         except ValueError as exc:
             raise ValueError(f"{self.label}: {exc}") from None
 
@@ -193,11 +206,16 @@ class ComponentSetHousing:
         self.cavity_beyond = max(h["diaphragm_side_depth_mm"] + WALL_ALLOWANCE_MM,
                                  self.flange_t + AXIAL_GAP_MM)
         self.z_wall = o["fs_length_mm"] + self.cavity_beyond
-        self.bearing_len = 3 * self.out_B          # two bearings + a spacer of width B
-        self.z_shoulder = self.z_wall + self.bearing_len
-        self.out_seal_depth = self.out_seal[1] + SEAL_DEPTH_ALLOWANCE_MM
-        self.z_out = self.z_shoulder + wall + self.out_seal_depth
+        out = self.retention["out"]
+        # DIN 472 groove n from the cavity, two bearings with a spacer of width B between,
+        # the step to the seal bore as the outer-ring shoulder, a DIN 471 ring, the seal
+        self.zb = self.z_wall + out.ring_bore.n + out.ring_bore.m
+        self.z_shoulder = self.zb + 3 * self.out_B
+        self.bearing_len = self.z_shoulder - self.z_wall
+        self.out_seal_depth = out.seal_stack
+        self.z_out = self.z_shoulder + out.shoulder_len + self.out_seal_depth
         self.journal_len = self.z_out - o["fs_length_mm"] + self.out_d  # stick-out d
+        self._mount_layout()
         # input cover, measured from the CS input face outwards
         self.cover_cavity_d = max(h["fs_wall_diameter_mm"],
                                   2 * (o["cring_hook_radius_mm"] + h["cring_clearance_min_mm"])
@@ -205,9 +223,43 @@ class ComponentSetHousing:
         self.cover_cavity_depth = max(
             o["cring_protrusion_mm"] + h["cring_clearance_min_mm"],
             (o.get("wg_protrusion_mm") or 0.0) + AXIAL_GAP_MM) + WALL_ALLOWANCE_MM
-        self.in_seal_depth = self.in_seal[1] + SEAL_DEPTH_ALLOWANCE_MM
-        self.cover_t = max(self.cover_cavity_depth + self.in_B + wall + self.in_seal_depth,
+        inp = self.retention["in"]
+        self.zb_in = self.cover_cavity_depth + inp.ring_bore.n + inp.ring_bore.m
+        self.in_shoulder = self.zb_in + 3 * self.in_B
+        self.in_seal_depth = inp.seal_stack
+        self.cover_t = max(self.in_shoulder + inp.shoulder_len + self.in_seal_depth,
                            SPIGOT_MM + self.cbore_depth + MIN_FLOOR_MM)
+        self._sink_counterbores()
+
+    def _sink_counterbores(self) -> None:
+        """Counterbores sunk so that an existing ISO 4762 length clamps cover and CS and
+        engages the housing thread between the least engagement and its depth."""
+        width, head = self.outline["cs_width_mm"], self.cbore_depth
+        m_min = MIN_ENGAGEMENT[self.options.material] * self.cs_d
+        grip_max = self.cover_t - head + width
+        fits = [l for l in preferred_lengths(self.cs_thread) if l - self.cs_depth <= grip_max]
+        if not fits:
+            raise ValueError(f"{self.label}: no ISO 4762 {self.cs_thread} length reaches "
+                             f"through the cover and the CS ({grip_max:.1f} mm)")
+        self.cs_length = max(fits)
+        grip = min(grip_max, self.cs_length - m_min)
+        self.cbore_depth = self.cover_t + width - grip
+
+    def _mount_layout(self) -> None:
+        """Mounting flange to the machine frame at the output end: ISO 4762 screws through
+        ISO 273 holes, heads on the input side clear of the housing body, a centring spigot
+        g6 around the seal bore on the output face."""
+        d = self.cs_d
+        # one size above the CS screws, twelve of them: the frame joint carries the full
+        # output torque (the bolt_pattern check says whether it does)
+        self.mount_thread = MOUNT_THREADS.get(self.cs_thread, self.cs_thread)
+        d = thread_diameter(self.mount_thread)
+        self.mount_t = max(self.options.wall_mm, 1.5 * d)
+        offset = max(ISO_4762_HEAD_MM[self.mount_thread][0] / 2 + 1.0, EDGE_FACTOR * d) + 1.0
+        self.mount_bc = self.housing_od + 2 * offset
+        self.mount_od = self.mount_bc + 2 * EDGE_FACTOR * d
+        self.mount_count = 12
+        self.mount_spigot = self.out_seal[0] + 2 * RIM_MM
 
     def _check(self) -> None:
         o, h, label = self.outline, self.rec, self.label
@@ -252,174 +304,105 @@ class ComponentSetHousing:
         return [housing, cover, flange]
 
     def _housing(self) -> Part:
-        o = self.outline
+        o, out = self.outline, self.retention["out"]
         z0, z1 = -self.recess_depth, self.z_out
+        body = cylinder(self.housing_od, z0, z1).fuse(
+            cylinder(self.mount_od, z1 - self.mount_t, z1),
+            cylinder(self.mount_spigot, z1 - 0.01, z1 + MOUNT_SPIGOT_MM))
         cutters = [cylinder(o["cs_outer_diameter_mm"], z0 - 1, 0),
                    cylinder(self.cavity_d, -1, self.z_wall),
                    cylinder(self.out_D, self.z_wall - 1, self.z_shoulder),
-                   cylinder(self.out_d + 2 * SHAFT_CLEARANCE_MM, self.z_shoulder - 1, z1 + 1),
-                   cylinder(self.out_seal[0], z1 - self.out_seal_depth, z1 + 1)]
+                   out.ring_bore.groove(self.zb - out.ring_bore.m)]
+        cutters += out.seal_bore(self.z_shoulder, z1 + MOUNT_SPIGOT_MM)
         cutters += [cylinder(self.cs_tap, -1, self.cs_drill, x, y)
                     for x, y in ring_points(o["cs_bolt_circle_mm"], self.cs_count, 0.0)]
-        shape = single_solid(cylinder(self.housing_od, z0, z1), cutters, self.label)
+        cutters += [cylinder(ISO_273_MEDIUM_MM[self.mount_thread], z1 - self.mount_t - 1,
+                             z1 + 1, x, y)
+                    for x, y in ring_points(self.mount_bc, self.mount_count, MOUNT_START_DEG)]
+        shape = single_solid(body, cutters, self.label)
         return Part("housing", shape, COLORS["housing"], dimensions=self._housing_dims(),
-                    bolt_circles=[self._cs_circle()], notes=self._notes(),
-                    purchased=self._purchased("housing"))
+                    bolt_circles=[self._cs_circle(), self._mount_circle()],
+                    notes=self._notes(), purchased=self._purchased("housing"),
+                    fits=housing_fits(self), neighbours=housing_neighbours(self),
+                    turns_with="case", material=MATERIALS[self.options.material])
 
     def _input_cover(self) -> Part:
-        o, t, depth = self.outline, self.cover_t, self.cover_cavity_depth
+        o, t, depth, inp = self.outline, self.cover_t, self.cover_cavity_depth, \
+            self.retention["in"]
         body = cylinder(o["cs_outer_diameter_mm"], 0, SPIGOT_MM).fuse(
             cylinder(self.housing_od, SPIGOT_MM, t))
         cutters = [cylinder(self.cover_cavity_d, -1, depth),
-                   cylinder(self.in_D, depth - 1, depth + self.in_B),
-                   cylinder(self.in_d + 2 * SHAFT_CLEARANCE_MM, depth, t + 1),
-                   cylinder(self.in_seal[0], t - self.in_seal_depth, t + 1)]
+                   cylinder(self.in_D, depth - 1, self.in_shoulder),
+                   inp.ring_bore.groove(self.zb_in - inp.ring_bore.m)]
+        cutters += inp.seal_bore(self.in_shoulder, t)
         for x, y in ring_points(o["cs_bolt_circle_mm"], self.cs_count, 0.0):
             cutters += [cylinder(self.clearance, -1, t + 1, x, y),
                         cylinder(self.cbore, t - self.cbore_depth, t + 1, x, y)]
         shape = single_solid(body, cutters, self.label)
         return Part("input_cover", shape, COLORS["input_cover"],
                     dimensions=self._cover_dims(), bolt_circles=[self._cover_circle()],
-                    notes=self._notes(), purchased=self._purchased("input_cover"))
+                    notes=self._notes(), purchased=self._purchased("input_cover"),
+                    fits=cover_fits(self), neighbours=cover_neighbours(self),
+                    turns_with="case", material=MATERIALS[self.options.material])
 
     def _output_flange(self) -> Part:
         o = self.outline
-        boss = o["fs_boss_diameter_mm"]
+        boss, out, fs = o["fs_boss_diameter_mm"], self.retention["out"], o["fs_length_mm"]
+        collar_end = self.zb - fs
         body = (cq.Workplane("XY").circle(boss / 2).extrude(self.flange_t)
                 .faces("<Z").edges().fillet(self.flange_r)
-                .faces(">Z").workplane().circle(self.out_d / 2).extrude(self.journal_len))
+                .faces(">Z").workplane().circle(out.collar_d / 2)
+                .extrude(collar_end - self.flange_t)
+                .faces(">Z").workplane().circle(self.out_d / 2)
+                .extrude(self.journal_len - (collar_end - self.flange_t)))
         cutters = [cylinder(self.fs_tap, -1, self.fs_drill, x, y)
                    for x, y in ring_points(o["fs_bolt_circle_mm"], self.fs_count, 0.0)]
+        cutters.append(out.ring_shaft.groove(self.z_shoulder - fs))
         shape = single_solid(body.val(), cutters, self.label)
         return Part("output_flange", shape, COLORS["output_flange"],
                     dimensions=self._flange_dims(), bolt_circles=[self._fs_circle()],
-                    notes=self._notes())
+                    notes=self._notes(), fits=flange_fits(self),
+                    neighbours=flange_neighbours(self), turns_with="output",
+                    material="C45 (EN ISO 683-1), seal track ≥ 45 HRC")
 
-    def _cs_circle(self) -> BoltCircle:
-        # the CS screws thread into the housing; its material ring runs from the cavity to
-        # the housing outside diameter
-        return BoltCircle("cs_screws", self.outline["cs_bolt_circle_mm"], self.cs_count,
-                          self.cs_tap, self.cs_thread, "tapped", self.cs_depth,
-                          annulus_inner_mm=self.cavity_d, annulus_outer_mm=self.housing_od,
-                          in_bom=False)
-
-    def _cover_circle(self) -> BoltCircle:
-        # counterbored clearance holes; each screw clamps cover + CS and threads into the
-        # housing's tapped holes (cs_screws)
-        return BoltCircle("cs_screws_cover", self.outline["cs_bolt_circle_mm"], self.cs_count,
-                          self.clearance, self.cs_thread, "clearance", self.cs_depth,
-                          annulus_inner_mm=max(self.in_D, self.in_seal[0]),
-                          annulus_outer_mm=self.housing_od,
-                          grip_mm=self.cover_t - self.cbore_depth + self.outline["cs_width_mm"])
-
-    def _purchased(self, part: str) -> list[dict]:
-        """Bought parts each part holds (bill of materials)."""
-        def bearing(name, d, big_d, b, qty, note):
-            return {"item": "bearing", "designation": f"{name} (ISO 15, {d:g}×{big_d:g}×{b:g})",
-                    "quantity": qty, "note": note}
-
-        def seal(d, seal_dims, note):
-            return {"item": "seal", "designation": f"rotary shaft lip seal {d:g}×"
-                    f"{seal_dims[0]:g}×{seal_dims[1]:g} (ISO 6194-1 / DIN 3760)",
-                    "quantity": 1, "note": note}
-        if part == "housing":
-            return [bearing(self.out_bearing, self.out_d, self.out_D, self.out_B, 2,
-                            "two-point support of the output flange journal"),
-                    seal(self.out_d, self.out_seal, "output shaft")]
-        if part == "input_cover":
-            return [bearing(self.in_bearing, self.in_d, self.in_D, self.in_B, 1,
-                            "input shaft support in the cover"),
-                    seal(self.in_d, self.in_seal, "input shaft")]
-        return []
-
-    def _fs_circle(self) -> BoltCircle:
-        # blind tapped holes in a solid disc (no bore: inner edge Ø0), outer edge = the
-        # FS-boss flange
-        return BoltCircle("fs_screws", self.outline["fs_bolt_circle_mm"], self.fs_count,
-                          self.fs_tap, self.fs_thread, "tapped", self.fs_depth,
-                          annulus_inner_mm=0.0,
-                          annulus_outer_mm=self.outline["fs_boss_diameter_mm"])
+    @property
+    def mount_spigot_len(self) -> float:
+        return MOUNT_SPIGOT_MM
 
     # -- records -----------------------------------------------------------------------------
+    def _notes(self) -> list[str]:
+        from .component_notes import notes
+        return notes(self)
+
+    # -- records (hdcad.geometry.component_record) ---------------------------------------------
+    def _purchased(self, part: str) -> list[dict]:
+        from .component_record import purchased
+        return purchased(self, part)
+
     def _housing_dims(self) -> dict[str, float]:
-        dims = {"outer_diameter_mm": self.housing_od,
-                "pilot_recess_mm": self.outline["cs_outer_diameter_mm"],
-                "pilot_depth_mm": self.recess_depth, "z_min_mm": -self.recess_depth,
-                "z_max_mm": self.z_out, "overall_length_mm": self.z_out + self.recess_depth,
-                "cavity_diameter_mm": self.cavity_d, "cavity_z0_mm": 0.0,
-                "cavity_z1_mm": self.z_wall, "diaphragm_axial_clearance_mm": self.cavity_beyond,
-                "bearing_seat_mm": self.out_D, "bearing_seat_depth_mm": self.bearing_len,
-                "shaft_hole_mm": self.out_d + 2 * SHAFT_CLEARANCE_MM,
-                "seal_recess_mm": self.out_seal[0], "seal_recess_depth_mm": self.out_seal_depth,
-                "tap_drill_mm": self.cs_tap, "thread_depth_mm": self.cs_depth,
-                "drill_depth_mm": self.cs_drill}
-        for column in ("oil_level_from_axis_mm", "grease_g"):
-            if self.rec.get(column) is not None:
-                dims[column] = self.rec[column]
-        return dims
+        from .component_record import housing_dims
+        return housing_dims(self)
 
     def _cover_dims(self) -> dict[str, float]:
-        return {"outer_diameter_mm": self.housing_od,
-                "spigot_diameter_mm": self.outline["cs_outer_diameter_mm"],
-                "spigot_length_mm": SPIGOT_MM, "thickness_mm": self.cover_t,
-                "cavity_diameter_mm": self.cover_cavity_d,
-                "cavity_depth_mm": self.cover_cavity_depth, "bearing_seat_mm": self.in_D,
-                "bearing_seat_depth_mm": self.in_B,
-                "shaft_hole_mm": self.in_d + 2 * SHAFT_CLEARANCE_MM,
-                "seal_recess_mm": self.in_seal[0], "seal_recess_depth_mm": self.in_seal_depth,
-                "clearance_hole_mm": self.clearance, "counterbore_diameter_mm": self.cbore,
-                "counterbore_depth_mm": self.cbore_depth, "input_shaft_mm": self.input_shaft}
+        from .component_record import cover_dims
+        return cover_dims(self)
 
     def _flange_dims(self) -> dict[str, float]:
-        boss = self.outline["fs_boss_diameter_mm"]
-        return {"outer_diameter_mm": boss, "flange_diameter_mm": boss,
-                "flange_thickness_mm": self.flange_t, "diaphragm_radius_mm": self.flange_r,
-                "journal_diameter_mm": self.out_d,
-                "overall_length_mm": self.flange_t + self.journal_len,
-                "tap_drill_mm": self.fs_tap, "thread_depth_mm": self.fs_depth,
-                "drill_depth_mm": self.fs_drill}
+        from .component_record import flange_dims
+        return flange_dims(self)
 
-    def _notes(self) -> list[str]:
-        o, h = self.outline, self.rec
-        return [
-            f"{self.label}: every gear dimension from the overlay tables {OUTLINE} and "
-            f"{HOUSING} (source: {o['source']}); the seeds have no outline or recommended-"
-            "housing table for the component types",
-            f"design guidelines seed 000 p.024: (1) CS pilot recess Ø{o['cs_outer_diameter_mm']:g}"
-            " H7 and all bearing seats turned in the housing and cover that hold it; (4) inner "
-            f"wall Ø{self.cavity_d:g} = max(recommended FS wall Ø{h['fs_wall_diameter_mm']:g}, "
-            f"diaphragm side Ø{h['diaphragm_side_diameter_mm']:g}) + {WALL_ALLOWANCE_MM:g} mm "
-            f"allowance; end wall {self.cavity_beyond:g} mm beyond the FS diaphragm (recommended "
-            f"≥ {h['diaphragm_side_depth_mm']:g}, flange {self.flange_t:g} + running gap "
-            f"{AXIAL_GAP_MM:g}); (5) two output bearings; (6) output flange Ø"
-            f"{o['fs_boss_diameter_mm']:g} = FS boss, radius R{self.flange_r:g} on its "
-            f"diaphragm side; (7) cover cavity Ø{self.cover_cavity_d:g} × "
-            f"{self.cover_cavity_depth:g} clears the C-ring hook (r {o['cring_hook_radius_mm']:g}, "
-            f"{o['cring_protrusion_mm']:g} mm proud of the CS) by ≥ "
-            f"{h['cring_clearance_min_mm']:g} mm + {WALL_ALLOWANCE_MM:g} mm allowance",
-            f"output bearings 2 × {self.out_bearing} (ISO 15 {self.out_d:g}×{self.out_D:g}×"
-            f"{self.out_B:g}; the largest 60xx bore ≤ FS boss − 2 × {FLANGE_STEP_MM:g} mm) in "
-            f"one bore with a spacer of width B (span 2B, not computed from the moment load: check "
-            f"it); outer rings against the shoulder, held on the cavity side and on the journal "
-            f"by circlips or a shaft nut (not modelled); seal ISO 6194-1 / DIN 3760 "
-            f"{self.out_d:g}×{self.out_seal[0]:g}×{self.out_seal[1]:g} from the outer face",
-            f"input shaft Ø{self.input_shaft:g} ({self.input_rule}); bearing {self.in_bearing} "
-            f"(ISO 15 {self.in_d:g}×{self.in_D:g}×{self.in_B:g}, the smallest 60xx bore ≥ the "
-            f"shaft) and seal {self.in_d:g}×{self.in_seal[0]:g}×{self.in_seal[1]:g}; it takes "
-            "the WG thrust (guideline 2, p.027); the second input support (guideline 5) is the "
-            "motor's bearing or the user's — one seat only is modelled",
-            f"CS screws {self.cs_count} × {self.cs_thread} on φ{o['cs_bolt_circle_mm']:g}: from "
-            f"the cover's outer face (clearance Ø{self.clearance:g} ISO 273 medium, counterbore "
-            f"Ø{self.cbore:g} DIN 974-1 × {self.cbore_depth:g}) through the CS holes into the "
-            f"housing, tapped {self.cs_thread} × {self.cs_depth:g} (tap drill Ø{self.cs_tap:g} "
-            f"ISO 2306, drilled {self.cs_drill:g}); the CS is clamped between the housing "
-            "shoulder and the cover spigot; the CS holes must be through holes (check the "
-            "outline drawing)",
-            f"FS screws {self.fs_count} × {self.fs_thread} on φ{o['fs_bolt_circle_mm']:g}: "
-            f"from inside the cup into the output flange, tapped × {self.fs_depth:g} (tap drill "
-            f"Ø{self.fs_tap:g}, drilled {self.fs_drill:g}); thread depth {TAPPED_DEPTH_FACTOR:g}"
-            "·d (design value: the least engagement of an aluminium part)",
-            f"housing Ø{self.housing_od:g} = CS φ + 2 × wall_mm; cover spigot {SPIGOT_MM:g} mm; "
-            f"bolt-circle ligaments ≥ {EDGE_MARGIN_MM:g} mm; output journal sticks out "
-            f"{self.out_d:g} mm (= its diameter) for the user's load",
-        ]
+    def _cs_circle(self) -> BoltCircle:
+        from .component_record import cs_circle
+        return cs_circle(self)
+
+    def _cover_circle(self) -> BoltCircle:
+        from .component_record import cover_circle
+        return cover_circle(self)
+
+    def _mount_circle(self) -> BoltCircle:
+        from .component_record import mount_circle
+        return mount_circle(self)
+
+    def _fs_circle(self) -> BoltCircle:
+        from .component_record import fs_circle
+        return fs_circle(self)

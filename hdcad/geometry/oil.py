@@ -10,7 +10,6 @@ from dataclasses import dataclass, field
 
 import cadquery as cq
 
-from .housing_common import SHAFT_CLEARANCE_MM
 from .part import Part
 from .primitives import cylinder
 
@@ -85,11 +84,11 @@ def component_set_cavity(parts: list[Part]) -> OilCavity:
     pieces = [cylinder(d_housing, housing["cavity_z0_mm"], housing["cavity_z1_mm"]),
               cylinder(d_cover, cs_face - depth, cs_face),
               cylinder(min(d_housing, d_cover), cs_face, 0.0)]
-    shaft = cover.dimensions["shaft_hole_mm"] - 2 * SHAFT_CLEARANCE_MM
+    shaft = cover.dimensions["seal_shaft_mm"]
     solid = pieces[0].fuse(*pieces[1:]).cut(
         by_name["output_flange"].placed(),
         cylinder(shaft, cs_face - depth, housing["cavity_z1_mm"])).clean()
-    seal_shaft = max(shaft, housing["shaft_hole_mm"] - 2 * SHAFT_CLEARANCE_MM)
+    seal_shaft = max(shaft, housing["seal_shaft_mm"])
     return OilCavity(solid, max(d_housing, d_cover) / 2, seal_shaft,
                      " at most: housing and cover cavities and the circular-spline bore less "
                      "the output flange and the input shaft; the gear's own volume below the "

@@ -7,13 +7,13 @@ from pathlib import Path
 
 from .drawing.measure import xz_section
 
-COLORS = {"part": "#b8c0cc", "bearing": "#5b8bd9", "seal": "#d9534f", "oring": "#d9534f",
+COLORS = {"spacer": "#aaaaaa", "part": "#b8c0cc", "bearing": "#5b8bd9", "seal": "#d9534f", "oring": "#d9534f",
           "ring": "#444444", "screw": "#555555", "plug": "#8a6d3b", "gear": "#7fb77e",
           "shaft": "#e8d8a8", "motor": "#c9a0dc", "other": "#999999"}
 LEGEND = {"part": "generated part", "bearing": "bearing", "seal": "seal / O-ring",
           "ring": "retaining ring", "screw": "screw", "plug": "plug",
           "gear": "gear (catalog outline)", "shaft": "user's shaft",
-          "motor": "motor envelope"}
+          "motor": "motor envelope", "spacer": "spacer"}
 
 
 def render_section(bodies, angle_deg: float, path: Path, title: str) -> Path:
