@@ -102,7 +102,8 @@ def test_svg_has_catalog_dimensions_and_bolt_labels(drawn, index):
     strings = _svg_strings(result["svg"])
     outer, diameters, circles = _expected(code, flange, part)
     for label in ([outer] if outer else []) + diameters:
-        assert label in strings
+        # a diameter with an ISO 286 fit carries its class after the size (Ø85 H7)
+        assert any(s == label or s.startswith(label + " ") for s in strings), label
     found = sorted((m[1], float(m[3] or m[4]), float(m[6]), m[2] or m[5])
                    for m in map(LABEL.match, strings) if m)
     want = sorted((str(n), float(h), float(bc), t) for n, h, bc, t in circles)
@@ -221,3 +222,14 @@ def test_axial_positions_are_dimensioned_from_the_mating_face(drawn):
     strings = _svg_strings(result["svg"])
     for key in ("pilot_floor_z_mm", "bearing_seat_z_mm", "shoulder_z_mm", "seal_z_mm"):
         assert f"{part.dimensions[key]:g}" in strings, key
+
+
+def test_fits_and_tolerance_frames_are_on_the_drawing(drawn):
+    """The bearing seat reads Ø55 M7 (ISO 286 class after the size, ISO 129-1); the title
+    block's first row holds the datums and ISO 1101 frames: ◎ Ø0.02 A for the seat."""
+    _, _, part, _, result = next(d for d in drawn if d[2].name == "casing_half_D")
+    strings = _svg_strings(result["svg"])
+    seat = next(f for f in part.fits if f.code == "M7")
+    assert f"Ø{seat.nominal_mm:g} M7" in strings
+    assert {"A", "B", "◎", "Ø0.02"} <= set(strings)
+    assert "bearing seat" in strings

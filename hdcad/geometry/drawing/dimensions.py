@@ -98,10 +98,17 @@ def diameter_dimensions(part: Part, m: Measured) -> list[Dimension]:
                             "nearest is", near)
         used.add(match[0])
         f = m.features[match[0]]
-        out.append(Dimension(key, f"Ø{value:g}", value, f.diameter, "diameter", f.z0, f.z1,
-                             _is_external(m, f)))
+        out.append(Dimension(key, f"Ø{value:g}{_fit_code(part, value)}", value, f.diameter,
+                             "diameter", f.z0, f.z1, _is_external(m, f)))
     _check_bore(part, m, out)
     return out
+
+
+def _fit_code(part: Part, value: float) -> str:
+    """' H7' when the part states an ISO 286 fit on this diameter (ISO 129-1: the tolerance
+    class follows the size)."""
+    codes = [f.code for f in part.fits if _agree(f.nominal_mm, value)]
+    return f" {codes[0]}" if codes else ""
 
 
 def _is_external(m: Measured, f: Cylinder) -> bool:

@@ -195,10 +195,15 @@ def title_strip(sheet: Sheet, part: Part, step_path: Path, scale: float,
     row is full."""
     w, h = SHEET_MM
     m, th, pad = MARGIN_MM, TITLE_H_MM, 2.0
-    row = th / 2
+    row = th / 3
     frame = np.array([[m, m], [w - m, m], [w - m, h - m], [m, h - m], [m, m]])
     sheet.lines([frame, np.array([[m, m + th], [w - m, m + th]]),
-                 np.array([[m, m + row], [w - m, m + row]])], "thin")
+                 np.array([[m, m + row], [w - m, m + row]]),
+                 np.array([[m, m + 2 * row], [w - m, m + 2 * row]])], "thin")
+    from .gdt import tolerance_row
+    if not tolerance_row(sheet, part, m + pad, w - m - pad, m + 2 * row, row):
+        sheet.text(m + pad, m + row * 2.5, "geometric tolerances: none stated", size=TEXT_PT,
+                   ha="left")
     text = " · ".join(notes or [])
     while notes and sheet.text_size(text, TEXT_PT)[0] > w - 2 * m - 2 * pad and len(text) > 8:
         text = text[:-6] + " …"
