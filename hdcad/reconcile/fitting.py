@@ -162,10 +162,9 @@ def _harmonic(problem: Problem, order: int, theta: dict, full: bool) -> np.ndarr
             cols = np.column_stack([fx.joint_response(inp["time_s"], c, k,
                                                       float(inp["J_kgm2"]), zeta)
                                     for c in basis])
-        else:
+        else:  # amplitude and phase as Legendre series in the record position
             u = inp["record_position"]
-            cols = np.column_stack(basis + [c * u for c in basis]
-                                   + [c * (1.5 * u * u - 0.5) for c in basis])
+            cols = np.column_stack([c * p for p in _legendre(u, TE_ORDER) for c in basis])
         cols = cols if full else cols[problem.rows]
         if len(problem.cache) > 64:
             problem.cache.clear()
@@ -173,7 +172,18 @@ def _harmonic(problem: Problem, order: int, theta: dict, full: bool) -> np.ndarr
     return problem.cache[key]
 
 
-TE_LABELS = ("sin", "cos", "sin_u1", "cos_u1", "sin_u2", "cos_u2")
+TE_ORDER = 2  # Legendre order of the slowly varying TE amplitude and phase (3 and 4
+#              fit suite B's modulated TE better but lost TE pairs on suite C: kept at 2)
+TE_LABELS = ("sin", "cos") + tuple(f"{f}_u{k}" for k in range(1, TE_ORDER + 1)
+                                   for f in ("sin", "cos"))
+
+
+def _legendre(u: np.ndarray, order: int) -> list[np.ndarray]:
+    """P0 … P_order of u ∈ [−1, 1] (Bonnet's recursion)."""
+    out = [np.ones_like(u), u]
+    for n in range(1, order):
+        out.append(((2 * n + 1) * u * out[n] - n * out[n - 1]) / (n + 1))
+    return out[:order + 1]
 
 
 def columns(problem: Problem, effects: tuple[str, ...], theta: dict[str, float],

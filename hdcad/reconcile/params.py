@@ -32,10 +32,11 @@ def _te(b: dict[str, float], th: dict[str, float]) -> dict[str, tuple[float, str
     out = {"amplitude": (math.hypot(b["sin"], b["cos"]), "rad"),
            "phase": (math.atan2(b["cos"], b["sin"]), "rad")}
     if "sin_u1" in b:  # slowly varying amplitude: the largest over the record
+        from .fitting import _legendre
         u = np.linspace(-1, 1, 201)
-        p2 = 1.5 * u * u - 0.5
-        s = b["sin"] + b["sin_u1"] * u + b["sin_u2"] * p2
-        c = b["cos"] + b["cos_u1"] * u + b["cos_u2"] * p2
+        polys = _legendre(u, sum(1 for k in b if k.startswith("sin_u")))
+        s = b["sin"] + sum(b[f"sin_u{k}"] * polys[k] for k in range(1, len(polys)))
+        c = b["cos"] + sum(b[f"cos_u{k}"] * polys[k] for k in range(1, len(polys)))
         out["amplitude_max"] = (float(np.max(np.hypot(s, c))), "rad")
     for shared in ("damping_ratio", "stiffness_scale"):
         if shared in th:
