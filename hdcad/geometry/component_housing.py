@@ -45,11 +45,12 @@ from .housing_common import (BEARING_TABLE, CBORE_SINK_MM, MIN_FLOOR_MM, SEAL_TA
 from .component_review import (cover_fits, cover_neighbours, flange_fits, flange_neighbours,
                                housing_fits, housing_neighbours)
 from .component_support import Retention
+from .features import screw_and_grip
 from .flanges import TAP_RUNOUT_PITCHES
 from .part import BoltCircle, Part
 from .primitives import cylinder, ring_points, single_solid
 from .standards import (DIN_974_1_CBORE_MM, ISO_261_PITCH_MM, ISO_273_MEDIUM_MM,
-                        ISO_4762_HEAD_MM, TAP_DRILL_MM, preferred_lengths, thread_diameter)
+                        ISO_4762_HEAD_MM, TAP_DRILL_MM, thread_diameter)
 from ..checks.bolts import MIN_ENGAGEMENT
 
 OUTLINE, HOUSING = "component_outline", "component_housing"
@@ -237,12 +238,10 @@ class ComponentSetHousing:
         width, head = self.outline["cs_width_mm"], self.cbore_depth
         m_min = MIN_ENGAGEMENT[self.options.material] * self.cs_d
         grip_max = self.cover_t - head + width
-        fits = [l for l in preferred_lengths(self.cs_thread) if l - self.cs_depth <= grip_max]
-        if not fits:
+        self.cs_length, grip = screw_and_grip(self.cs_thread, grip_max, self.cs_depth, m_min)
+        if self.cs_length is None:
             raise ValueError(f"{self.label}: no ISO 4762 {self.cs_thread} length reaches "
                              f"through the cover and the CS ({grip_max:.1f} mm)")
-        self.cs_length = max(fits)
-        grip = min(grip_max, self.cs_length - m_min)
         self.cbore_depth = self.cover_t + width - grip
 
     def _mount_layout(self) -> None:

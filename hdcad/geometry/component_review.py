@@ -7,11 +7,11 @@ from __future__ import annotations
 
 from ..checks.bolts import MIN_ENGAGEMENT
 from .component_support import pair_fits
-from .features import annulus
+from .features import annulus, screw_body, screw_for_grip
 from .iso286 import iso286_fit
 from .part import Neighbour
 from .primitives import cylinder, ring_points
-from .standards import ISO_261_PITCH_MM, ISO_4762_HEAD_MM, preferred_lengths
+
 
 FS_WALL_MM = 1.0   # the flexspline drawn as a 1 mm shell of its outside Ø: an outline only
 
@@ -76,17 +76,14 @@ def _cs_screws(h) -> list[Neighbour]:
     o, thread = h.outline, h.cs_thread
     grip = h.cover_t - h.cbore_depth + o["cs_width_mm"]
     m_min = MIN_ENGAGEMENT[h.options.material] * h.cs_d
-    fits = [l for l in preferred_lengths(thread) if m_min <= l - grip <= h.cs_depth]
-    if not fits:
+    length, _ = screw_for_grip(thread, grip, h.cs_depth, m_min)
+    if length is None:
         return []
-    length = max(fits)
-    dk, k = ISO_4762_HEAD_MM[thread]
-    minor, seat = h.cs_d - ISO_261_PITCH_MM[thread], h.cover_t - h.cbore_depth
+    seat = h.cover_t - h.cbore_depth
     dims = {"d": h.cs_d, "l": length, "grip": grip, "engaged": length - grip,
             "thread_depth": h.cs_depth, "engaged_min": m_min}
     return [Neighbour("screw", f"ISO 4762 {thread}×{length}", dims, seat, xy_mm=(x, y),
-                      body=cylinder(dk, seat, seat + k, x, y).fuse(
-                          cylinder(minor, seat - length, seat + 0.01, x, y)).Solids()[0])
+                      body=screw_body(thread, seat, length, x, y))
             for x, y in ring_points(o["cs_bolt_circle_mm"], h.cs_count, 0.0)]
 
 

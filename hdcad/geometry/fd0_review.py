@@ -5,20 +5,12 @@ face, the WG hub φC standing out to the flange bores) and the ISO 4762 casing s
 from __future__ import annotations
 
 from ..checks.bolts import MIN_ENGAGEMENT
+from .features import screw_body, screw_for_grip
 from .part import Neighbour
 from .primitives import cylinder, ring_points
-from .standards import ISO_261_PITCH_MM, ISO_4762_HEAD_MM, preferred_lengths, thread_diameter
+from .standards import ISO_261_PITCH_MM, thread_diameter
 
 RECESS_MM = 2.0   # φB recess depth: not in table 311-1 (figure lost); the smallest FD-0 H
-
-
-def screw_length(thread: str, grip: float, depth: float) -> tuple[int | None, float]:
-    """Longest ISO 4762 length that engages ≥ 1·d in steel and does not bottom."""
-    d = thread_diameter(thread)
-    fits = [l for l in preferred_lengths(thread)
-            if MIN_ENGAGEMENT["steel"] * d <= l - grip <= depth]
-    length = max(fits, default=None)
-    return length, (length - grip if length else 0.0)
 
 
 def flange_neighbours(flange, with_unit: bool) -> list[Neighbour]:
@@ -26,20 +18,17 @@ def flange_neighbours(flange, with_unit: bool) -> list[Neighbour]:
     frame (mating face z = 0, the unit towards −z)."""
     row, thread = flange.row, flange.thread
     grip = flange.thickness - flange.cbore_depth
-    length, engaged = screw_length(thread, grip, row["M_depth_mm"])
+    least = MIN_ENGAGEMENT["steel"] * thread_diameter(thread)
+    length, engaged = screw_for_grip(thread, grip, row["M_depth_mm"], least)
     out = []
     if length is not None:
-        dk, k = ISO_4762_HEAD_MM[thread]
-        minor = thread_diameter(thread) - ISO_261_PITCH_MM[thread]
         seat = grip
         dims = {"d": thread_diameter(thread), "l": length, "grip": grip, "engaged": engaged,
                 "thread_depth": row["M_depth_mm"],
                 "engaged_min": MIN_ENGAGEMENT["steel"] * thread_diameter(thread)}
         for x, y in ring_points(flange.ring, flange.count, 0.0):
-            body = cylinder(dk, seat, seat + k, x, y).fuse(
-                cylinder(minor, seat - length, seat + 0.01, x, y))
             out.append(Neighbour("screw", f"ISO 4762 {thread}×{length}", dims, seat,
-                                 xy_mm=(x, y), body=body.Solids()[0]))
+                                 xy_mm=(x, y), body=screw_body(thread, seat, length, x, y)))
     if with_unit:
         out.append(_unit(flange))
     return out

@@ -19,14 +19,14 @@ from ..checks.bolts import MIN_ENGAGEMENT
 from ..design_options import DesignOptions
 from .fd_layout import SPIGOT_DEPTH_MM, FDLayout
 from .fd_notes import casing_notes
-from .features import annulus, lead_in
+from .features import annulus, lead_in, screw_and_grip
 from .housing_common import (CBORE_SINK_MM, CBORE_WALL_MIN_MM, EDGE_MARGIN_MM, check_ring,
                              slack, table_value)
 from .iso286 import iso286_fit
 from .part import BoltCircle, GeometricTolerance, Neighbour, Part
 from .primitives import break_outer_edges, cylinder, ring_points, single_solid
 from .standards import (DIN_974_1_CBORE_MM, ISO_273_MEDIUM_MM,
-                        ISO_4762_HEAD_MM, TAP_DRILL_MM, preferred_lengths, thread_diameter)
+                        ISO_4762_HEAD_MM, TAP_DRILL_MM, thread_diameter)
 
 COLORS = {"S": (0.62, 0.66, 0.72), "D": (0.52, 0.58, 0.68)}
 MATERIAL = "S355J2 (EN 10025-2), or C45 (EN ISO 683-1) for the running spigot"
@@ -75,12 +75,11 @@ class FDCasingHalf:
         m_min = MIN_ENGAGEMENT["steel"] * thread_diameter(self.screw)
         depth = self.fd2["K_depth_mm"]
         grip_max = self.lay.floor - (ISO_4762_HEAD_MM[self.screw][1] + CBORE_SINK_MM)
-        fits = [l for l in preferred_lengths(self.screw) if l - depth <= grip_max]
-        if not fits:
+        length, grip = screw_and_grip(self.screw, grip_max, depth, m_min)
+        if length is None:
             raise ValueError(f"{self.label}: no ISO 4762 {self.screw} length fits a "
                              f"{grip_max:.1f} mm grip")
-        length = max(fits)
-        return length, min(grip_max, length - m_min)
+        return length, grip
 
     def _check_rings(self) -> None:
         fd0, fd2, lay, label = self.fd0, self.fd2, self.lay, self.label

@@ -5,10 +5,10 @@ the user's shaft, each true-size in its part's frame."""
 from __future__ import annotations
 
 from ..checks.bolts import MIN_ENGAGEMENT
-from .features import annulus
+from .features import annulus, screw_body
 from .part import Neighbour
 from .primitives import cylinder, ring_points
-from .standards import ISO_261_PITCH_MM, ISO_4762_HEAD_MM, thread_diameter
+from .standards import ISO_261_PITCH_MM, thread_diameter
 
 
 def casing_neighbours(half) -> list[Neighbour]:
@@ -40,9 +40,7 @@ def _spline_screws(half) -> list[Neighbour]:
     minor (tap-drill) diameter so that a screw in its tapped hole does not count as
     interference."""
     lay, fd2 = half.lay, half.fd2
-    dk, k = ISO_4762_HEAD_MM[half.screw]
     d = thread_diameter(half.screw)
-    minor = d - ISO_261_PITCH_MM[half.screw]
     seat = lay.thickness - half.cbore_depth
     tip = seat - half.screw_length
     engaged = lay.pilot_depth - tip
@@ -50,9 +48,9 @@ def _spline_screws(half) -> list[Neighbour]:
             "thread_depth": fd2["K_depth_mm"], "engaged_min": MIN_ENGAGEMENT["steel"] * d}
     out = []
     for x, y in ring_points(fd2["I_mm"], fd2["J_count"], 0.0):
-        body = cylinder(dk, seat, seat + k, x, y).fuse(cylinder(minor, tip, seat + 0.01, x, y))
         out.append(Neighbour("screw", f"ISO 4762 {half.screw}×{half.screw_length}", dims,
-                             seat, xy_mm=(x, y), body=body.Solids()[0]))
+                             seat, xy_mm=(x, y),
+                             body=screw_body(half.screw, seat, half.screw_length, x, y)))
     return out
 
 

@@ -47,13 +47,11 @@ def lead_in(diameter: float, z_face: float, length: float, inward: bool,
             angle_deg: float = LEAD_IN_DEG) -> cq.Solid:
     """Cone cutter for a lead-in chamfer on a bore Ø ``diameter`` whose open face is at
     ``z_face``; the bore runs towards +z (``inward``) or −z from there."""
-    grow = length * math.tan(math.radians(angle_deg))
+    slope = math.tan(math.radians(angle_deg))
     sign = 1.0 if inward else -1.0
-    base = z_face - sign * 0.5  # start beyond the face so the cut is clean
-    height = length + 0.5
-    r_face = diameter / 2 + grow
-    return cq.Solid.makeCone(r_face + 0.5 * math.tan(math.radians(angle_deg)), diameter / 2,
-                             height, cq.Vector(0, 0, base), cq.Vector(0, 0, sign))
+    base = z_face - sign * 0.5  # start 0.5 mm beyond the face so the cut is clean
+    return cq.Solid.makeCone(diameter / 2 + (length + 0.5) * slope, diameter / 2,
+                             length + 0.5, cq.Vector(0, 0, base), cq.Vector(0, 0, sign))
 
 
 @dataclass(frozen=True)
@@ -297,3 +295,38 @@ class PlugPort:
         return (f"oil port {self.thread} (ISO 261 fine), thread {self.thread_depth:g} deep, "
                 f"spot face Ø{self.spot_face:g} square to the hole; plug DIN 908 {self.thread} "
                 f"with sealing ring {self.ring}")
+
+
+# -- screws -----------------------------------------------------------------------------------
+def screw_for_grip(thread: str, grip: float, depth: float, least: float
+                   ) -> tuple[int | None, float]:
+    """(ISO 4762 length, engagement) for a fixed grip [mm]: the longest existing length that
+    engages at least ``least`` and does not bottom in a ``depth`` deep thread; (None, 0)."""
+    from .standards import preferred_lengths
+    fits = [l for l in preferred_lengths(thread) if least <= l - grip <= depth]
+    length = max(fits, default=None)
+    return length, (length - grip if length else 0.0)
+
+
+def screw_and_grip(thread: str, grip_max: float, depth: float, least: float
+                   ) -> tuple[int | None, float]:
+    """(ISO 4762 length, grip) when the counterbore may be sunk: the longest existing length
+    that does not bottom with the largest grip, and the grip that leaves it ``least``
+    engagement at most (the counterbore is then sunk to that grip)."""
+    from .standards import preferred_lengths
+    fits = [l for l in preferred_lengths(thread) if l - depth <= grip_max]
+    if not fits:
+        return None, grip_max
+    length = max(fits)
+    return length, min(grip_max, length - least)
+
+
+def screw_body(thread: str, seat_z: float, length: float, x: float, y: float) -> cq.Solid:
+    """An ISO 4762 screw for the review assembly: head true size (dk × k) above ``seat_z``,
+    the shank at the thread's minor (tap-drill) Ø below it, so that a screw in its tapped
+    hole does not count as interference."""
+    from .standards import ISO_261_PITCH_MM, ISO_4762_HEAD_MM, thread_diameter
+    dk, k = ISO_4762_HEAD_MM[thread]
+    minor = thread_diameter(thread) - ISO_261_PITCH_MM[thread]
+    return cylinder(dk, seat_z, seat_z + k, x, y).fuse(
+        cylinder(minor, seat_z - length, seat_z + 0.01, x, y)).Solids()[0]

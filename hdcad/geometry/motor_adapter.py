@@ -23,11 +23,12 @@ from dataclasses import dataclass
 from ..catalog import Catalog
 from ..checks.bolts import MIN_ENGAGEMENT
 from ..design_options import DesignOptions
+from .features import screw_body, screw_for_grip
 from .iso286 import iso286_fit
 from .part import BoltCircle, Neighbour, Part
 from .primitives import break_outer_edges, cylinder, ring_points, single_solid
 from .standards import (DIN_974_1_CBORE_MM, ISO_261_PITCH_MM, ISO_273_MEDIUM_MM,
-                        ISO_4762_HEAD_MM, TAP_DRILL_MM, preferred_lengths, thread_diameter)
+                        ISO_4762_HEAD_MM, TAP_DRILL_MM, thread_diameter)
 
 FLANGE_HOLES = 4            # the flange code's D holes: count not in the seeds (as flanges.py)
 FLANGE_START_DEG = 45.0
@@ -165,11 +166,8 @@ class MotorAdapter:
     def screw_length(self) -> tuple[int | None, float]:
         """(ISO 4762 length, engagement in the flange's D thread): the longest existing
         length that does not bottom in the D-deep thread and engages ≥ 1·d."""
-        depth = self.row["thread_depth_mm"] or 0.0
-        fits = [l for l in preferred_lengths(self.row["thread"])
-                if self.d_flange <= l - self.grip <= depth]
-        length = max(fits, default=None)
-        return length, (length - self.grip if length else 0.0)
+        return screw_for_grip(self.row["thread"], self.grip,
+                              self.row["thread_depth_mm"] or 0.0, self.d_flange)
 
     def _holes(self) -> list[tuple[float, float, float]]:
         """(x, y, d) of both hole rings: flange screws and motor screws."""
@@ -267,15 +265,12 @@ class MotorAdapter:
         length, engaged = self.screw_length()
         if length is None:
             return []
-        dk, k = ISO_4762_HEAD_MM[self.row["thread"]]
-        minor = self.d_flange - ISO_261_PITCH_MM[self.row["thread"]]
         seat = self.thickness - self.cbore_depth
         dims = {"d": self.d_flange, "l": length, "grip": self.grip, "engaged": engaged,
                 "thread_depth": self.row["thread_depth_mm"], "engaged_min": self.d_flange}
         out = []
         for x, y in ring_points(self.row["bolt_circle_mm"], FLANGE_HOLES, FLANGE_START_DEG):
-            body = cylinder(dk, seat, seat + k, x, y).fuse(
-                cylinder(minor, seat - length, seat + 0.01, x, y))
             out.append(Neighbour("screw", f"ISO 4762 {self.row['thread']}×{length}", dims,
-                                 seat, xy_mm=(x, y), body=body.Solids()[0]))
+                                 seat, xy_mm=(x, y),
+                                 body=screw_body(self.row["thread"], seat, length, x, y)))
         return out
