@@ -51,8 +51,9 @@ def plate(tmp_path_factory):
 
 def test_nearest_code_is_chosen_and_named(plate):
     row, mismatch = motor_choice(MODEL, CATALOG, _options(ODD_MOTOR))
-    # PC: A Ø80, C Ø100, M8 × 20, F 14-24: takes the Ø14 shaft, nearest pilot and circle
-    assert row["flange_code"] == "PC" and len(mismatch) == 3
+    # PC (M8 × 20) and PD (M6 × 14) both have A Ø80, C Ø100, F 14-24: the nearest pilot
+    # and circle; PD's thread is nearer the motor's M5
+    assert row["flange_code"] == "PD" and len(mismatch) == 3
     assert any("pilot Ø73 ≠ A Ø80" in m for m in mismatch)
 
 
@@ -62,22 +63,22 @@ def test_plate_measured_from_step(plate):
     dims, box = part.dimensions, shape.BoundingBox()
     assert box.zmin == pytest.approx(-dims["spigot_length_mm"], abs=TOL)
     assert box.zmax == pytest.approx(dims["thickness_mm"], abs=TOL)
-    assert dims["spigot_length_mm"] <= 8 - 0.5  # table 064-1 PC: B = 8
+    assert dims["spigot_length_mm"] <= 8 - 0.5  # table 064-1 PD: B = 8
     feats = {round(c.diameter, 3): c for c in axial_features(z_cylinders(shape))}
     spigot, recess = feats[80.0], feats[73.0]
     assert spigot.z1 == pytest.approx(0.0, abs=TOL)                      # spigot into A
     assert recess.z1 - recess.z0 == pytest.approx(1.6 + 0.5, abs=TOL)   # motor pilot + 0.5
     assert 16.0 in feats                                                # shaft bore Ø14 + 2
     holes = [c for c in z_cylinders(shape) if not c.on_axis]
-    flange = {(round(c.x, 2), round(c.y, 2)) for c in holes if abs(c.diameter - 9.0) < TOL}
+    flange = {(round(c.x, 2), round(c.y, 2)) for c in holes if abs(c.diameter - 6.6) < TOL}
     motor = {(round(c.x, 2), round(c.y, 2)) for c in holes if abs(c.diameter - 4.2) < TOL}
-    assert len(flange) == 4 and len(motor) == 4   # ISO 273 M8 medium 9.0; M5 tap drill 4.2
+    assert len(flange) == 4 and len(motor) == 4   # ISO 273 M6 medium 6.6; M5 tap drill 4.2
     assert all(math.hypot(x, y) == pytest.approx(50.0, abs=TOL) for x, y in flange)
     assert all(math.hypot(x, y) == pytest.approx(49.2, abs=TOL) for x, y in motor)
     # every hole ≥ 1.5·d from the square's edge (HOUSING_RULES §4)
     half = dims["square_mm"] / 2
     assert all(half - max(abs(x), abs(y)) >= 1.5 * 5 - 1e-6 for x, y in motor)
-    assert all(half - max(abs(x), abs(y)) >= 1.5 * 8 - 1e-6 for x, y in flange)
+    assert all(half - max(abs(x), abs(y)) >= 1.5 * 6 - 1e-6 for x, y in flange)
     assert {f.code for f in part.fits} == {"g6", "H7"}
 
 
@@ -87,16 +88,28 @@ def test_review_assembly_has_no_overlap_and_screws_engage(plate):
     assert review.interferences(bodies) == []
     screws = review.screw_engagements(bodies)
     assert len(screws) == 4
-    for s in screws:  # M8: ≥ 1·d, within the flange's 20 mm thread (table 064-1 PC)
-        assert 8.0 <= s["engaged"] <= 20.0
+    for s in screws:  # M6: ≥ 1·d, within the flange's 14 mm thread (table 064-1 PD)
+        assert 6.0 <= s["engaged"] <= 14.0
 
 
-def test_shaft_reach_needs_the_coupling_engagement():
-    row = dict(CATALOG.find("gh_motor_flange", series="CSF-GH", size=45, flange_code="PC"))
+def test_shaft_reach_needs_the_coupling_engagement(tmp_path):
+    row = dict(CATALOG.find("gh_motor_flange", series="CSF-GH", size=45, flange_code="PD"))
     assert motor_shaft_reach(row, ODD_MOTOR, 14.0).status == "not_evaluated"
     row["shaft_engagement_mm"] = 20.0
     check = motor_shaft_reach(row, ODD_MOTOR, 14.0)   # 30 − 14 = 16 < 20
     assert check.status == "fail" and check.value == 16.0
+    # the column is open to an overlay (delivery-drawing value; invented here for the test)
+    from hdcad.catalog import load_catalog
+    overlay = tmp_path / "engagement.yaml"
+    overlay.write_text("source: test value, not catalog data\ntables:\n  gh_motor_flange:\n"
+                       "    - {series: CSF-GH, size: 45, table: 064-1, flange_type: I, "
+                       "flange_code: PD, pilot_H7_mm: 80, pilot_depth_mm: 8, "
+                       "bolt_circle_mm: 100, thread: M6, thread_depth_mm: 14, "
+                       "coupling_bore_min_mm: 14, coupling_bore_max_mm: 24, "
+                       "shaft_engagement_mm: 12}\n", encoding="utf-8")
+    cat = load_catalog(overlay)
+    assert cat.find("gh_motor_flange", series="CSF-GH", size=45,
+                    flange_code="PD")["shaft_engagement_mm"] == 12.0
 
 
 def test_no_code_takes_the_shaft_is_bad_input():

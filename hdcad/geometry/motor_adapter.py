@@ -100,8 +100,12 @@ def choose_code(catalog: Catalog, series: str, size: int, motor: Motor
     direct = [r for r in takes if not mismatches(r, motor)]
     if direct:
         return direct[0], []
-    best = min(takes, key=lambda r: abs(r["pilot_H7_mm"] - motor.pilot_diameter_mm)
-               + abs(r["bolt_circle_mm"] - motor.bolt_circle_mm))
+    # nearest pilot and bolt circle; then the thread nearest the motor's, then the code
+    best = min(takes, key=lambda r: (abs(r["pilot_H7_mm"] - motor.pilot_diameter_mm)
+                                     + abs(r["bolt_circle_mm"] - motor.bolt_circle_mm),
+                                     abs(thread_diameter(r["thread"])
+                                         - thread_diameter(motor.bolt_thread)),
+                                     r["flange_code"]))
     return best, mismatches(best, motor)
 
 
