@@ -175,3 +175,13 @@ def test_bolt_circle_that_does_not_fit_raises(catalog):
 def test_a_running_gap_that_eats_the_pilot_raises(catalog):
     with pytest.raises(ValueError, match="pilot"):
         FDCasingHalf(20, catalog, DesignOptions(running_gap_mm=20.0))
+
+
+@pytest.mark.parametrize("size", SIZES)
+def test_a_lip_below_the_wall_minimum_is_said(size, catalog):
+    """Where catalog φI and φB leave less than the 3 mm steel wall between the counterbores
+    and the gear recess, the part notes say so (FD-20: 0.75 mm, FD-25: 1 mm)."""
+    half = FDCasingHalf(size, catalog, DesignOptions(), side="S")
+    lip = (half.fd2["I_mm"] - half.cbore - half.fd0["B_H7_mm"]) / 2
+    said = any("between the spline-screw counterbores" in n for n in half.build().notes)
+    assert said == (lip < WALL_MIN_MM)

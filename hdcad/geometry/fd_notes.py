@@ -35,6 +35,13 @@ def _source_notes(half) -> list[str]:
         f"gear/pulley spigot recess Ø{fd0['B_H7_mm']:g} H7 × {SPIGOT_DEPTH_MM:g} mm: design "
         "value (no standard depth)",
     ]
+    lip = (fd2["I_mm"] - half.cbore - fd0["B_H7_mm"]) / 2
+    if lip < WALL_MIN_MM:
+        notes.append(f"only {lip:g} mm between the spline-screw counterbores and the "
+                     f"Ø{fd0['B_H7_mm']:g} gear recess over its {SPIGOT_DEPTH_MM:g} mm depth "
+                     f"(catalog φI {fd2['I_mm']:g} and φB are close; machined walls ≥ "
+                     f"{WALL_MIN_MM:g} mm in steel): machine the lip with care, or use screws "
+                     "with low heads (DIN 7984) and smaller counterbores")
     if lay.unit_width > fd0["D_mm"]:
         notes.append(f"the unit is {lay.unit_width:g} mm wide instead of FD-0 D "
                      f"{fd0['D_mm']:g} mm: two bearings per half, the oil-port window, the "
