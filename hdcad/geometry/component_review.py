@@ -19,12 +19,10 @@ FS_WALL_MM = 1.0   # the flexspline drawn as a 1 mm shell of its outside Ø: an 
 def _pair(r, z0: float) -> list[Neighbour]:
     """Bearings at z0 and z0 + 2B, the outer spacer between, the DIN 472 ring below z0."""
     b, ring = r.bearing, r.ring_bore
-    out = [Neighbour("bearing", b.designation, {"d": b.d, "D": b.D, "B": b.B}, z,
-                     body=b.body(z)) for z in (z0, z0 + 2 * b.B)]
+    out = [b.neighbour(z) for z in (z0, z0 + 2 * b.B)]
     out.append(Neighbour("spacer", "outer spacer", {"B": b.B}, z0 + b.B,
                          body=annulus(b.D - 2 * b.h, b.D, z0 + b.B, z0 + 2 * b.B)))
-    out.append(Neighbour("ring", f"{ring.standard} {ring.d1:g}×{ring.s:g}", {}, z0 - ring.s,
-                         body=ring.body(z0 - ring.s)))
+    out.append(ring.neighbour(z0 - ring.s))
     return out
 
 
@@ -32,15 +30,13 @@ def _inner(r, z0: float, z_ring: float, group: str) -> list[Neighbour]:
     b, ring = r.bearing, r.ring_shaft
     return [Neighbour("spacer", "inner spacer", {"B": b.B}, z0 + b.B, turns_with=group,
                       body=annulus(b.d, b.d + 2 * b.h, z0 + b.B, z0 + 2 * b.B)),
-            Neighbour("ring", f"{ring.standard} {ring.d1:g}×{ring.s:g}", {}, z_ring,
-                      turns_with=group, body=ring.body(z_ring))]
+            ring.neighbour(z_ring, turns_with=group)]
 
 
 def housing_neighbours(h) -> list[Neighbour]:
     o, r = h.outline, h.retention["out"]
     seal_z = h.z_out + h.mount_spigot_len - r.seal.b
-    out = _pair(r, h.zb) + [Neighbour("seal", f"lip seal {r.seal.d1:g}×{r.seal.d2:g}", {
-        "d1": r.seal.d1, "d2": r.seal.d2, "b": r.seal.b}, seal_z, body=r.seal.body(seal_z))]
+    out = _pair(r, h.zb) + [r.seal.neighbour(seal_z)]
     cs = annulus(o["fs_outer_diameter_mm"] + 1.0, o["cs_outer_diameter_mm"], -o["cs_width_mm"],
                  0.0)
     holes = [cylinder(h.cs_d + 0.5, -o["cs_width_mm"] - 1, 1, x, y)
@@ -62,10 +58,7 @@ def flange_neighbours(h) -> list[Neighbour]:
 
 def cover_neighbours(h) -> list[Neighbour]:
     r, t = h.retention["in"], h.cover_t
-    out = _pair(r, h.zb_in)
-    seal_z = t - r.seal.b
-    out.append(Neighbour("seal", f"lip seal {r.seal.d1:g}×{r.seal.d2:g}", {
-        "d1": r.seal.d1, "d2": r.seal.d2, "b": r.seal.b}, seal_z, body=r.seal.body(seal_z)))
+    out = _pair(r, h.zb_in) + [r.seal.neighbour(t - r.seal.b)]
     out += _cs_screws(h)
     out += _input_shaft(h)
     return out

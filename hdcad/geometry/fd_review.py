@@ -14,14 +14,8 @@ from .standards import ISO_261_PITCH_MM, thread_diameter
 def casing_neighbours(half) -> list[Neighbour]:
     lay = half.lay
     b, ring, seal = lay.bearing, lay.bore_ring, lay.seal
-    out = [Neighbour("bearing", b.designation, {"d": b.d, "D": b.D, "B": b.B}, z,
-                     body=b.body(z)) for z in (lay.bearing_z, lay.bearing_z + b.B)]
-    out.append(Neighbour("ring", f"{ring.standard} {ring.d1:g}×{ring.s:g}",
-                         {"d1": ring.d1, "s": ring.s}, lay.bearing_z - ring.s,
-                         body=ring.body(lay.bearing_z - ring.s)))
-    out.append(Neighbour("seal", f"lip seal {seal.d1:g}×{seal.d2:g}×{seal.b:g}",
-                         {"d1": seal.d1, "d2": seal.d2, "b": seal.b}, lay.seal_outer_z - seal.b,
-                         body=seal.body(lay.seal_outer_z - seal.b)))
+    out = [b.neighbour(z) for z in (lay.bearing_z, lay.bearing_z + b.B)]
+    out += [ring.neighbour(lay.bearing_z - ring.s), seal.neighbour(lay.seal_outer_z - seal.b)]
     out += [Neighbour("plug", f"DIN 908 {lay.port.thread}", {"d": lay.port.d}, lay.port_z,
                       body=lay.port.body(lay.body_d / 2, lay.port_z, a))
             for a in half.port_angles]
@@ -85,9 +79,7 @@ def _hub_and_shaft(half) -> list[Neighbour]:
 def sleeve_neighbours(sleeve) -> list[Neighbour]:
     lay = sleeve.lay
     ring, gland = lay.shaft_ring, lay.shaft_gland
-    return [Neighbour("ring", f"{ring.standard} {ring.d1:g}×{ring.s:g}",
-                      {"d1": ring.d1, "s": ring.s}, lay.shoulder_z,
-                      body=ring.body(lay.shoulder_z)),
+    return [ring.neighbour(lay.shoulder_z),
             Neighbour("oring", f"O-ring {lay.shaft_d:g}×{gland.d2:g}", {"d2": gland.d2},
                       sleeve.oring_z, body=gland.ring_in_bore(lay.shaft_d, sleeve.oring_z))]
 

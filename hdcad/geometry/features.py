@@ -96,6 +96,12 @@ class Bearing:
     def text(self) -> str:
         return f"{self.designation} (ISO 15, {self.d:g}×{self.D:g}×{self.B:g})"
 
+    def neighbour(self, z0: float, turns_with: str = ""):
+        """The bearing as a review-assembly neighbour at z0."""
+        from .part import Neighbour
+        return Neighbour("bearing", self.designation, {"d": self.d, "D": self.D, "B": self.B},
+                         z0, body=self.body(z0), turns_with=turns_with)
+
 
 @dataclass(frozen=True)
 class RetainingRing:
@@ -138,6 +144,13 @@ class RetainingRing:
             return annulus(self.d2 - 2 * self.radial, self.d2, z0, z0 + self.s)
         return annulus(self.d2, self.d2 + 2 * self.radial, z0, z0 + self.s)
 
+    def neighbour(self, z0: float, turns_with: str = ""):
+        """The ring as a review-assembly neighbour, seated from z0."""
+        from .part import Neighbour
+        return Neighbour("ring", f"{self.standard} {self.d1:g}×{self.s:g}",
+                         {"d1": self.d1, "s": self.s}, z0, body=self.body(z0),
+                         turns_with=turns_with)
+
     def text(self) -> str:
         return (f"{self.standard} {self.d1:g}×{self.s:g}: groove Ø{self.d2:g} × {self.m:g} "
                 f"(H13), edge distance ≥ {self.n:g}")
@@ -170,6 +183,12 @@ class LipSeal:
 
     def body(self, z0: float) -> cq.Solid:
         return annulus(self.d1, self.d2, z0, z0 + self.b)
+
+    def neighbour(self, z0: float):
+        """The seal as a review-assembly neighbour, its inner face at z0."""
+        from .part import Neighbour
+        return Neighbour("seal", f"lip seal {self.d1:g}×{self.d2:g}×{self.b:g}",
+                         {"d1": self.d1, "d2": self.d2, "b": self.b}, z0, body=self.body(z0))
 
     def text(self) -> str:
         return (f"lip seal {self.d1:g}×{self.d2:g}×{self.b:g} (ISO 6194-1 / DIN 3760): bore "
