@@ -184,7 +184,10 @@ def _draw_parts(parts: list, stage: Path, masses: dict[str, float] | None = None
 
 
 def _part_record(part, mass_kg: float) -> dict:
-    return {"name": part.name, "mass_kg": mass_kg, "dimensions": part.dimensions,
+    volume = part.solid().Volume()
+    before = mass_kg * (volume + part.pockets_mm3) / volume if part.pockets_mm3 else None
+    return {"name": part.name, "mass_kg": mass_kg, "mass_before_pockets_kg": before,
+            "dimensions": part.dimensions,
             "notes": part.notes, "purchased": part.purchased, "material": part.material,
             "bolt_circles": [b.__dict__ for b in part.bolt_circles],
             "fits": [dict(f.__dict__, deviations_um=list(f.deviations_um)) for f in part.fits],

@@ -233,3 +233,17 @@ def test_fits_and_tolerance_frames_are_on_the_drawing(drawn):
     assert f"Ø{seat.nominal_mm:g} M7" in strings
     assert {"A", "B", "◎", "Ø0.02"} <= set(strings)
     assert "bearing seat" in strings
+
+
+def test_sections_named_and_axial_positions_as_running_dimensions(drawn):
+    """ISO 128-44: the half section carries its name (A–A) and its cutting plane is marked on
+    the front view; ISO 129-1: the axial positions from the mating face share one or two
+    running dimension lines, so a casing half of FD-25 (eight positions) keeps scale 1:2."""
+    from hdcad.geometry.drawing.conventions import AXIAL_KEYS
+    for code, _, part, _, result in drawn:
+        assert result["views"][1]["section"] == "A–A"
+        drawn_keys = {d["key"] for d in result["dimensions"]}
+        assert {k for k in AXIAL_KEYS if k in part.dimensions
+                and 0 < part.dimensions[k] < part.dimensions["thickness_mm"] - TOL} <= drawn_keys
+        if part.name.startswith("casing_half"):
+            assert result["scale"] == 0.5, (part.name, result["scale"])

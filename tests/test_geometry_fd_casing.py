@@ -185,3 +185,32 @@ def test_a_lip_below_the_wall_minimum_is_said(size, catalog):
     lip = (half.fd2["I_mm"] - half.cbore - half.fd0["B_H7_mm"]) / 2
     said = any("between the spline-screw counterbores" in n for n in half.build().notes)
     assert said == (lip < WALL_MIN_MM)
+
+
+@pytest.mark.parametrize("size", SIZES)
+def test_lightening_groove_keeps_walls_and_reports_the_mass_saved(size, catalog, tmp_path):
+    """HOUSING_RULES §4: pockets where material carries nothing, mass before and after. The
+    groove floor is a turned surface of the stated Ø between z0 and z1; it stays a steel wall
+    (3 mm) from the spline-screw clearance holes and the port spot faces; the volume it took
+    is the re-imported solid's volume difference to the same half built without it."""
+    half = FDCasingHalf(size, catalog, DesignOptions(), side="S")
+    relief, lay = half.relief, half.lay
+    if relief is None:  # FD-20: the port spot faces and counterbores leave < RELIEF_MIN_MM
+        assert size == 20
+        return
+    part = half.build()
+    shape = _round_trip(part, tmp_path)
+    floor = _feature(shape, relief.floor_d)
+    assert floor is not None
+    assert floor.z0 >= relief.z0 - TOL and floor.z1 <= relief.z1 + TOL
+    holes = [c for c in z_cylinders(shape) if abs(c.diameter - half.clearance) <= TOL]
+    assert holes
+    for c in holes:  # wall over each clearance hole, measured on the solid's faces
+        assert relief.floor_d / 2 - (math.hypot(c.x, c.y) + c.diameter / 2) >= WALL_MIN_MM - TOL
+    spot = lay.port_z + lay.port.spot_face / 2
+    assert relief.z0 - spot >= WALL_MIN_MM - TOL
+    plain = copy.copy(half)
+    plain.relief = None
+    full = plain.build().solid().Volume()
+    assert part.pockets_mm3 == pytest.approx(full - shape.Volume(), rel=1e-3)
+    assert part.pockets_mm3 > 0.03 * full   # worth the turning: ≥ 3 % of the half

@@ -109,8 +109,9 @@ def _sealed(openings: list[str]) -> Criterion:
     if openings:
         return Criterion("sealed", FAIL, "the oil would run out: " + "; ".join(openings))
     return Criterion("sealed", PASS, "no opening in the cavity wall below the level (static "
-                                     "joints are metal to metal: seal them with liquid gasket "
-                                     "or add O-ring grooves)")
+                                     "joints between parts that do not move are closed by the "
+                                     "O-ring or liquid gasket each part's notes name, seed 000 "
+                                     "p.028: the probe treats them as sealed)")
 
 
 def _plug(level: float, plug_radius: float | None) -> Criterion:

@@ -17,9 +17,9 @@ from __future__ import annotations
 from ..catalog import Catalog
 from ..checks.bolts import MIN_ENGAGEMENT
 from ..design_options import DesignOptions
-from .fd_layout import SPIGOT_DEPTH_MM, FDLayout
+from .fd_layout import SPIGOT_DEPTH_MM, WALL_MIN_MM, FDLayout
 from .fd_notes import casing_notes
-from .features import annulus, lead_in, screw_and_grip
+from .features import TurnedRelief, annulus, lead_in, screw_and_grip
 from .housing_common import (CBORE_SINK_MM, CBORE_WALL_MIN_MM, EDGE_MARGIN_MM, check_ring,
                              slack, table_value)
 from .iso286 import iso286_fit
@@ -28,6 +28,8 @@ from .primitives import break_outer_edges, cylinder, ring_points, single_solid
 from .standards import (DIN_974_1_CBORE_MM, ISO_273_MEDIUM_MM,
                         ISO_4762_HEAD_MM, TAP_DRILL_MM, thread_diameter)
 
+RELIEF_MIN_MM = 5.0          # a lightening groove shorter than this saves too little to turn
+RELIEF_MIN_DEPTH_MM = 2.0    # ... or shallower than this
 COLORS = {"S": (0.62, 0.66, 0.72), "D": (0.52, 0.58, 0.68)}
 MATERIAL = "S355J2 (EN 10025-2), or C45 (EN ISO 683-1) for the running spigot"
 
@@ -53,6 +55,7 @@ class FDCasingHalf:
         self._screws()
         self._check_rings()
         self.port_angles = self._port_angles()
+        self.relief = self._relief()
 
     @staticmethod
     def sizes(catalog: Catalog) -> list[int]:
@@ -118,16 +121,37 @@ class FDCasingHalf:
             start = -start % 360.0
         return start, (start + 180.0) % 360.0
 
+    def _relief(self) -> TurnedRelief | None:
+        """Lightening groove in the body between the port spot faces and the holes from the
+        outer face, down to a wall over the spline-screw clearance holes; none when shorter
+        than RELIEF_MIN_MM."""
+        lay, fd0 = self.lay, self.fd0
+        floor_d = self.fd2["I_mm"] + self.clearance + 2 * WALL_MIN_MM
+        z0 = max(lay.front_length, lay.port_z + lay.port.spot_face / 2) + WALL_MIN_MM
+        z1 = min(lay.thickness - self.cbore_depth,
+                 lay.thickness - fd0["M_depth_mm"] - self.tap_drill) - WALL_MIN_MM
+        if z1 - z0 < RELIEF_MIN_MM or lay.body_d - floor_d < 2 * RELIEF_MIN_DEPTH_MM:
+            return None
+        return TurnedRelief(lay.body_d, floor_d, z0, z1)
+
     # -- solid -----------------------------------------------------------------------------------
     def build(self) -> Part:
-        shape = single_solid(self._blank(), self._cutters(), self.label)
-        for outline in {self.lay.outer_d, self.lay.body_d}:
-            shape = break_outer_edges(shape, outer_d=outline)
-        return Part(name=f"casing_half_{self.side}", shape=shape, color=COLORS[self.side],
+        raw = single_solid(self._blank(), self._cutters(), self.label)
+        shape, pockets = self._finished(raw), 0.0
+        if self.relief is not None:  # mass before and after: the same half without it
+            plain = shape.val().Volume()
+            shape = self._finished(single_solid(raw.val(), [self.relief.cutter()], self.label))
+            pockets = plain - shape.val().Volume()
+        return Part(pockets_mm3=pockets, name=f"casing_half_{self.side}", shape=shape, color=COLORS[self.side],
                     dimensions=self._dimensions(), bolt_circles=self._bolt_circles(),
                     notes=casing_notes(self), purchased=self._purchased(),
                     fits=self._fits(), tolerances=self._tolerances(),
                     neighbours=self._neighbours(), material=MATERIAL)
+
+    def _finished(self, shape):
+        for outline in {self.lay.outer_d, self.lay.body_d}:
+            shape = break_outer_edges(shape, outer_d=outline)
+        return shape
 
     def _blank(self):
         lay, gap = self.lay, self.options.running_gap_mm
@@ -196,6 +220,9 @@ class FDCasingHalf:
                 "gap_seal_length_mm":
                 lay.gap_seal_length, "unit_width_mm": lay.unit_width,
                 "counterbore_diameter_mm": self.cbore, "counterbore_depth_mm": self.cbore_depth}
+        if self.relief is not None:
+            dims.update(relief_groove_floor_mm=self.relief.floor_d,
+                        relief_groove_z0_mm=self.relief.z0, relief_groove_z1_mm=self.relief.z1)
         # a point in the cavity between the WG hub and the splines, on the mid-plane
         dims["oil_probe_r_mm"] = (fd2["H_mm"] + fd2["S_mm"]) / 4
         dims["gear_start_deg"] = self._gear_start_deg()

@@ -47,6 +47,11 @@ def _source_notes(half) -> list[str]:
                      f"{fd0['D_mm']:g} mm: two bearings per half, the oil-port window, the "
                      "retaining rings and the lip seal need the room (FD-0's own arrangement is "
                      "in the lost figure 311-1)")
+    if half.relief is not None:
+        notes.append(half.relief.text() + f": {WALL_MIN_MM:g} mm over the spline-screw "
+                     f"clearance holes, {WALL_MIN_MM:g} mm clear of the port spot faces and of "
+                     "the counterbores and gear holes from the outer face (pockets where "
+                     "material carries nothing; mass before and after in results.json)")
     return notes
 
 

@@ -43,6 +43,33 @@ def annulus(inner_d: float, outer_d: float, z0: float, z1: float) -> cq.Solid:
     return cylinder(outer_d, z0, z1).cut(cylinder(inner_d, z0 - 1, z1 + 1)).Solids()[0]
 
 
+@dataclass(frozen=True)
+class TurnedRelief:
+    """A lightening groove turned into an outer cylinder Ø ``outer_d`` down to Ø ``floor_d``
+    between z0 and z1 [mm]: material that carries nothing (HOUSING_RULES §4: pocket where
+    material is not needed). The floor keeps the holes under it inside a wall."""
+
+    outer_d: float
+    floor_d: float
+    z0: float
+    z1: float
+    corner_r: float = 1.0   # floor corners: the turning tool's nose radius
+
+    @property
+    def volume_mm3(self) -> float:
+        return math.pi / 4 * (self.outer_d ** 2 - self.floor_d ** 2) * (self.z1 - self.z0)
+
+    def cutter(self) -> cq.Solid:
+        ring = annulus(self.floor_d, self.outer_d + 2, self.z0, self.z1)
+        edges = cq.Workplane().add(ring).edges(
+            cq.selectors.RadiusNthSelector(0)).vals()
+        return ring.fillet(self.corner_r, edges) if self.corner_r > 0 else ring
+
+    def text(self) -> str:
+        return (f"lightening groove Ø{self.floor_d:g} from z {self.z0:g} to {self.z1:g} in the "
+                f"Ø{self.outer_d:g} body, floor corners r {self.corner_r:g}")
+
+
 def lead_in(diameter: float, z_face: float, length: float, inward: bool,
             angle_deg: float = LEAD_IN_DEG) -> cq.Solid:
     """Cone cutter for a lead-in chamfer on a bore Ø ``diameter`` whose open face is at

@@ -98,6 +98,7 @@ class Part:
     material: str = ""          # EN designation for the drawing title block, e.g. "S355J2 (EN 10025-2)"
     turns_with: str = ""        # rotation group in the machine (parts of one group do not move
     #                             against each other); "" = its own
+    pockets_mm3: float = 0.0    # material the lightening pockets removed (mass before/after)
 
     def solid(self) -> cq.Shape:
         return self.shape.val()

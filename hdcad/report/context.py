@@ -170,6 +170,8 @@ def check_families(checks: list[dict]) -> list[dict]:
 
 def part_rows(parts: list[dict]) -> list[dict]:
     return [{"name": p["name"], "mass": fmt(p["mass_kg"]),
+             "mass_before": fmt(p["mass_before_pockets_kg"])
+             if p.get("mass_before_pockets_kg") else "",
              "dimensions": [(k.removesuffix("_mm").replace("_", " "), fmt(v))
                             for k, v in p["dimensions"].items()], "notes": p["notes"],
              "material": p.get("material", ""),

@@ -36,7 +36,8 @@ from .dimensions import (bolt_circle_holes, bolt_circle_label, diameter_dimensio
                          length_dimensions, Measured, outer_dimension, axial_dimensions)
 from .paper import clip_half, Sheet
 from .layout import assign_sides, layout
-from .views import dimension_side_view, draw_front, draw_side, label_bolt_circles, title_strip
+from .views import (dimension_side_view, draw_front, draw_side, label_bolt_circles, label_section,
+                    title_strip)
 
 
 def verified_dimensions(part: Part, m: Measured) -> list[Dimension]:
@@ -93,6 +94,7 @@ def part_drawing(step_path: Path, part: Part, svg_path: Path, png_path: Path | N
     views = [{"name": "front (from +Z)", "box_mm": draw_front(sheet, solid, m, lay, circles)},
              {"name": "side (half section in XZ, from +Y)",
               "box_mm": draw_side(sheet, solid, m, lay, circles)}]
+    views[1]["section"] = label_section(sheet, m, lay)
     dimension_side_view(sheet, m, lay, dims)
     label_bolt_circles(sheet, m, lay, circles)
     title_strip(sheet, part, step_path, lay.scale, drawing_notes(part, mass_kg, material))

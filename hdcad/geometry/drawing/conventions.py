@@ -33,11 +33,11 @@ DIAMETER_KEYS = ("outer_diameter_mm", "square_mm", "body_diameter_mm", "pilot_re
                  "pilot_boss_diameter_mm", "gap_seal_journal_mm",
                  "pilot_diameter_mm", "spigot_recess_mm", "spigot_diameter_mm",
                  "hub_diameter_mm", "journal_diameter_mm", "bearing_seat_mm", "seal_recess_mm",
-                 "bore_mm", "shaft_hole_mm")
+                 "bore_mm", "shaft_hole_mm", "relief_groove_floor_mm")
 """Part.dimensions keys drawn as diameters in the side view (those a part has)."""
 OUTER_KEYS = ("outer_diameter_mm", "square_mm")
 AXIAL_KEYS = ("front_z_mm", "pilot_floor_z_mm", "bearing_seat_z_mm", "shoulder_z_mm",
-              "seal_z_mm")
+              "seal_z_mm", "relief_groove_z0_mm", "relief_groove_z1_mm")
 """Part.dimensions keys that are positions of faces along the axis from z = 0 (the mating
 face): drawn as parallel dimensions from it."""
 BORE_KEYS = ("bore_mm", "shaft_hole_mm")

@@ -9,7 +9,9 @@ from .conventions import (CENTRE_OVER_MM, DIM_SPACING_MM, GAP_MM, LANDING_MM, MA
                           SHEET_MM, TITLE_H_MM, TOLERANCE_MM, VIEW_GAP_MM)
 from .measure import _inside
 from .dimensions import _agree, Dimension, Measured
+from . import running
 from .paper import Sheet
+from .running import is_running
 
 
 @dataclass
@@ -39,9 +41,11 @@ def _extents(sheet: Sheet, m: Measured, dims: list[Dimension], labels: list[str]
     stacks = DIM_SPACING_MM * (_count(dims, "left") + _count(dims, "right"))
     side_w = stacks + m.box.zlen * s
     sides = [side for side, _ in label_rows(len(labels))]
+    parallel = sum(d.kind == "length" and not is_running(d) for d in dims)
     above = max(half_v + GAP_MM + row * sides.count(1),
-                half_v + DIM_SPACING_MM * _count(dims, "top") + row)
-    below = half_v + (GAP_MM + row * sides.count(-1) if -1 in sides else CENTRE_OVER_MM + 1)
+                half_v + running.height(sheet, dims, m, s) + DIM_SPACING_MM * parallel + row)
+    below = max(half_v + (GAP_MM + row * sides.count(-1) if -1 in sides else CENTRE_OVER_MM + 1),
+                half_v + row + 1.5)  # the section's name under the side view
     return front_w, side_w, above, below
 
 

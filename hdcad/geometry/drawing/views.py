@@ -18,6 +18,7 @@ from .measure import hlr_polylines
 from .dimensions import _agree, bolt_circle_label, Dimension, Measured
 from .paper import clip_half, Sheet
 from .layout import label_rows, Layout
+from .running import draw_running, is_running
 
 
 def _to_paper(lines: list[np.ndarray], origin, s: float) -> list[np.ndarray]:
@@ -67,6 +68,27 @@ def draw_side(sheet: Sheet, solid: cq.Solid, m: Measured, lay: Layout,
     return [x0, lay.cy - r, x1, lay.cy + r]
 
 
+SECTION_LETTER = "A"
+
+
+def label_section(sheet: Sheet, m: Measured, lay: Layout) -> str:
+    """ISO 128-44 designation of the half section: on the front view the cutting plane's end
+    (a short thick stroke where the thin centre line leaves the outline, at x > 0) with an
+    arrow in the direction of sight (towards −Y, paper right) and the letter; under the side
+    view its name. Returns the name, e.g. ``A–A``."""
+    s, (cx, cy) = lay.scale, lay.front
+    top = cy + m.box.xlen / 2 * s
+    sheet.lines([np.array([[cx, top + 0.6], [cx, top + 3.4]])], "visible")
+    tip = (cx + 4.5, top + 3.4)
+    sheet.lines([np.array([[cx, top + 3.4], tip])], "thin")
+    sheet.arrow(tip, (cx, top + 3.4))
+    sheet.text(tip[0] + 1.0, top + 2.0, SECTION_LETTER, ha="left", va="center")
+    name = f"{SECTION_LETTER}–{SECTION_LETTER}"
+    x_mid = lay.side_x0 + m.box.zlen * s / 2
+    sheet.text(x_mid, cy - m.box.xlen / 2 * s - 3.2, name, va="center")
+    return name
+
+
 def _cut_hole_axes(sheet: Sheet, m: Measured, lay: Layout, circles) -> None:
     """Centre lines of bolt holes the section plane cuts (hole centre on +X)."""
     s = lay.scale
@@ -99,10 +121,11 @@ def dimension_side_view(sheet: Sheet, m: Measured, lay: Layout, dims: list[Dimen
             end_z = d.z0 if side == "left" else d.z1
             start = lay.side_x0 + (end_z - m.box.zmin) * s
             _diameter(sheet, d, lay, start, edge + sign * k * DIM_SPACING_MM)
-    top = lay.cy + m.box.xmax * s
-    for k, d in enumerate(sorted((d for d in dims if d.kind == "length"),
-                                 key=lambda d: d.measured_mm), start=1):
-        _length(sheet, d, m, lay, top + k * DIM_SPACING_MM)
+    top = draw_running(sheet, dims, m, lay.side_x0, lay.cy, s, _top_at)
+    parallel = sorted((d for d in dims if d.kind == "length" and not is_running(d)),
+                      key=lambda d: d.measured_mm)
+    for k, d in enumerate(parallel, start=1):
+        _length(sheet, d, m, lay, top + k * DIM_SPACING_MM - 3.0)
 
 
 def _diameter(sheet: Sheet, d: Dimension, lay: Layout, start_x: float, x: float) -> None:
