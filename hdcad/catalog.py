@@ -68,6 +68,15 @@ OVERLAY_ONLY_TABLES: dict[str, tuple[tuple[str, ...], tuple[str, ...]]] = {
         ("series", "size", "pilot_diameter_mm", "pilot_kind", "pilot_depth_mm",
          "bolt_circle_mm", "bolt_count", "bolt_thread"),
     ),
+    # the gear head's mounting face on the machine (output side): lost outline figures 050/058
+    "gh_mounting_interface": (
+        ("series", "size", "pilot_diameter_mm", "pilot_kind", "pilot_fit", "pilot_depth_mm",
+         "bolt_circle_mm", "bolt_count", "bolt_thread", "clearance_hole_mm",
+         "bolt_start_angle_deg", "outline_mm", "bore_mm", "oring_d1_d2_mm", "sealant",
+         "source"),
+        ("series", "size", "pilot_diameter_mm", "pilot_kind", "pilot_depth_mm",
+         "bolt_circle_mm", "bolt_count", "bolt_thread"),
+    ),
     # CSF/CSG-2A-GR "recommended housing dimensions" (inner wall); see catalog/README.md
     "component_housing": (
         ("series", "size", "fs_wall_diameter_mm", "diaphragm_side_diameter_mm",

@@ -247,3 +247,12 @@ def test_sections_named_and_axial_positions_as_running_dimensions(drawn):
                 and 0 < part.dimensions[k] < part.dimensions["thickness_mm"] - TOL} <= drawn_keys
         if part.name.startswith("casing_half"):
             assert result["scale"] == 0.5, (part.name, result["scale"])
+
+
+def test_every_tolerance_symbol_is_a_glyph_of_the_drawing_font():
+    """An ISO 1101 symbol the font lacks prints as an empty box on the drawing."""
+    from matplotlib.font_manager import FontProperties, findfont
+    from matplotlib.ft2font import FT2Font
+    from hdcad.geometry.drawing.gdt import SYMBOLS
+    charmap = FT2Font(findfont(FontProperties())).get_charmap()
+    assert [s for s in SYMBOLS.values() if ord(s) not in charmap] == []

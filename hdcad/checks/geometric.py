@@ -137,7 +137,9 @@ def geometric_checks(model: GearModel, parts: list, options: DesignOptions,
             source="seed 003 tables 053-1 … 064-1 (motor side only)"))
     if model.family == "GH":
         from .motor import gh_mounting_plate
-        checks.append(gh_mounting_plate(catalog.has("gh_mounting_interface")))
+        plate = next((p for p in parts if p.name == "mounting_plate"), None)
+        checks.append(gh_mounting_plate(catalog.has("gh_mounting_interface"),
+                                        plate.dimensions if plate else None))
     known = momentary_torque_Nm(model)
     out_torque = known or 0.0
     for part in parts:

@@ -58,20 +58,32 @@ def motor_shaft_reach(row: dict, motor: dict, shift_mm: float) -> CheckResult:
                     motor["shaft_length_mm"] - shift_mm, need, "mm", ">=", SOURCE)
 
 
-MOUNTING_FIELDS = ("pilot_diameter_mm", "bolt_circle_mm", "bolt_count", "bolt_thread")
+MOUNTING_FIELDS = ("pilot_diameter_mm", "pilot_kind", "pilot_depth_mm", "bolt_circle_mm",
+                   "bolt_count", "bolt_thread")
 
 
-def gh_mounting_plate(catalog_has_interface: bool) -> CheckResult:
+def gh_mounting_plate(catalog_has_interface: bool, plate: dict | None = None
+                      ) -> CheckResult:
     """The gear head's mounting plate on the machine needs the gear head's own mounting
-    interface (output-side pilot and bolt pattern), which the seeds do not give."""
+    interface (output-side pilot and bolt pattern), which the seeds do not give. Built from
+    the overlay, the check reports how far the corner screws' heads [mm] stand clear of the
+    gear head's outline (they must be reachable with the gear head fitted); the screws'
+    torque capacity is in the plate's bolt_pattern records."""
     title = "Mounting plate of the gear head on the machine"
-    formula = "plate from the gear head's mounting interface"
-    if not catalog_has_interface:
+    formula = "corner head clearance = a·√2 − outline/2 − head/2 ≥ 1 mm"
+    if not catalog_has_interface or plate is None:
         return not_evaluated("gh_mounting_plate", title, "geometry", formula,
                              "the gear head's mounting interface (overlay table "
                              "gh_mounting_interface: " + ", ".join(MOUNTING_FIELDS)
                              + "); the seeds' outline figures 050/058 are lost",
                              source="seed 003 (outline drawings not in the text)")
-    return not_evaluated("gh_mounting_plate", title, "geometry", formula,
-                         "a mounting-plate generator (the interface is given, the plate is "
-                         "not built yet)", source="overlay gh_mounting_interface")
+    a, outline, head = (plate["corner_hole_offset_mm"], plate["gear_head_outline_mm"],
+                        plate["head_diameter_mm"])
+    inputs = {"a": Quantity(a, "mm", "generated plate"),
+              "outline": Quantity(outline, "mm", "overlay gh_mounting_interface"),
+              "head": Quantity(head, "mm", "ISO 4762")}
+    return compared("gh_mounting_plate", title, "geometry", formula, inputs,
+                    a * 2 ** 0.5 - outline / 2 - head / 2, 1.0, "mm", ">=",
+                    "overlay gh_mounting_interface; HOUSING_RULES §4",
+                    f"plate □{plate['square_mm']:g} × {plate['thickness_mm']:g} built from the "
+                    "overlay; its screw patterns are checked as bolt_pattern records")

@@ -31,10 +31,10 @@ def build_parts(model: GearModel, catalog: Catalog, options: DesignOptions) -> l
             return _fd_casing(model, catalog, options)
         if model.family == "FD-0":
             return _fd_flanges(model, catalog, options)
-        if model.family == "GH" and options.motor:
-            return _gh_motor(model, catalog, options)
         if model.family == "GH":
-            return [_gh_flange(model, catalog, options)]
+            parts = (_gh_motor(model, catalog, options) if options.motor
+                     else [_gh_flange(model, catalog, options)])
+            return parts + _gh_mounting(model, catalog)
         if model.family == "2A-GR" and not missing:
             return _component_set(model, catalog, options)
     except ValueError as exc:
@@ -84,6 +84,22 @@ def _gh_flange(model, catalog, options) -> Part:
         raise ValueError(f"motor_flange {code!r} is not available for {model.series}-"
                          f"{model.size}; complete codes: {', '.join(codes)}")
     return GHMotorFlange(model.series, model.size, code, catalog, options).build()
+
+
+# the mounting plate sits apart from the input parts in assembly.step: the gear head's
+# length between its input and output faces is not in the seeds
+MOUNTING_PLATE_OFFSET_MM = -300.0
+
+
+def _gh_mounting(model, catalog) -> list[Part]:
+    """The mounting plate on the machine, when the overlay gives the gear head's face."""
+    from .gh_mounting_plate import mounting_plate
+    maker = mounting_plate(catalog, model.series, model.size)
+    if maker is None:
+        return []
+    part = maker.build()
+    part.offset_z_mm = MOUNTING_PLATE_OFFSET_MM
+    return [part]
 
 
 def motor_choice(model, catalog, options) -> tuple[dict, list[str]]:

@@ -99,20 +99,21 @@ class GearHeadFace:
                           outline_square_mm=square, grip_mm=thickness - self.counterbore[1],
                           start_angle_deg=r.get("bolt_start_angle_deg") or 0.0)
 
-    def notes(self) -> list[str]:
+    def notes(self, table: str = TABLE, far_face: str = "motor face",
+              part: str = "the flange") -> list[str]:
         r = self.row
         kind = "spigot into the gear head" if self.spigot else "recess over the gear-head spigot"
-        text = [f"gear-head side from overlay table {TABLE} ({r.get('source') or 'overlay'}): "
+        text = [f"gear-head side from overlay table {table} ({r.get('source') or 'overlay'}): "
                 f"pilot Ø{r['pilot_diameter_mm']:g} {self.pilot_fit()} ({kind}, "
                 f"{r['pilot_depth_mm']:g} mm), {r['bolt_count']} × {r['bolt_thread']} ISO 4762 "
                 f"on Ø{r['bolt_circle_mm']:g} in Ø{self.clearance_mm:g} holes, counterbored "
-                f"Ø{self.counterbore[0]:g} × {self.counterbore[1]:g} from the motor face "
-                "(fit the flange to the gear head before the motor)"]
+                f"Ø{self.counterbore[0]:g} × {self.counterbore[1]:g} from the {far_face} "
+                f"(fit {part} to the gear head first)"]
         gland = self.oring()
         text.append(f"O-ring {gland[0]:g} × {gland[1]:g} in a face gland (depth "
                     f"{GLAND_DEPTH * gland[1]:.2f}, width {GLAND_WIDTH * gland[1]:.2f}; seed 000 "
                     "table 028-1)" if gland else
-                    f"no O-ring size in {TABLE}: seal the face with {r.get('sealant') or 'a liquid gasket'} "
+                    f"no O-ring size in {table}: seal the face with {r.get('sealant') or 'a liquid gasket'} "
                     "(seed 000 table 028-1 asks for a seal on the input-side flange face)")
         return text
 

@@ -8,8 +8,10 @@ import numpy as np
 from ..part import Part
 from .conventions import TEXT_PT
 
-SYMBOLS = {"coaxiality": "◎", "runout": "↗", "axial runout": "↗", "perpendicularity": "⟂",
-           "parallelism": "∥", "flatness": "▱", "position": "⌖", "cylindricity": "○"}
+# ISO 1101 symbols as glyphs the drawing font (DejaVu Sans) has: ⊥ for ⟂ and ⊕ for ⌖,
+# which it lacks (they printed as empty boxes); a test checks every symbol is in the font
+SYMBOLS = {"coaxiality": "◎", "runout": "↗", "axial runout": "↗", "perpendicularity": "⊥",
+           "parallelism": "∥", "flatness": "⏥", "position": "⊕", "cylindricity": "○"}
 """ISO 1101 symbols of the characteristics the parts carry."""
 DIAMETER_ZONE = ("coaxiality", "position")  # cylindrical tolerance zone: value shown as Ø
 
