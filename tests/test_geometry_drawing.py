@@ -84,9 +84,12 @@ def _expected(code, flange, part):
             spline = (fd2["J_count"], ISO_273_MEDIUM_MM[fd2["K_thread"]], fd2["I_mm"],
                       fd2["K_thread"])
             # the body behind the running-gap seal is FD-0 φA; the front ring's Ø is a
-            # design value (seal journal + walls), so no catalog outer extent to compare
-            return (None, [f"Ø{fd0['A_mm']:g}", f"Ø{fd2['A_g7_mm']:g}",
-                           f"Ø{fd0['B_H7_mm']:g}"], [spline, gear])
+            # design value (seal journal + walls), so no catalog outer extent to compare.
+            # The gear recess: FD-0 φB 65 would leave 75/2 − 8/2 − 65/2 = 1 mm to the DIN
+            # 974-1 Ø8 counterbores of the M4 spline screws on φI 75; a 3 mm wall plus the
+            # recess's 0.5 mm lead-in gives 75 − 8 − 2 × 3.5 = 60
+            return (None, [f"Ø{fd0['A_mm']:g}", f"Ø{fd2['A_g7_mm']:g}", "Ø60"],
+                    [spline, gear])
         clearance = (fd0["L_count"], ISO_273_MEDIUM_MM[fd0["M_thread"]], fd0["K_mm"],
                      fd0["M_thread"])
         return f"Ø{fd0['A_mm']:g}", [f"Ø{fd0['B_H7_mm']:g}"], [clearance]

@@ -77,7 +77,13 @@ def test_casing_half_measured_from_step(size, side, catalog, tmp_path):
     assert seal.z0 == pytest.approx(lay.shoulder_z, abs=TOL)
     assert seal.z1 - seal.z0 >= lay.seal.b + 0.3 - TOL
     assert _feature(shape, half.fd2["A_g7_mm"]) is not None         # spline pilot
-    assert _feature(shape, half.fd0["B_H7_mm"]) is not None         # gear spigot recess
+    recess = _feature(shape, lay.gear_recess_d)                     # gear spigot recess
+    assert recess is not None and lay.gear_recess_d <= half.fd0["B_H7_mm"]
+    cbores = [c for c in z_cylinders(shape) if abs(c.diameter - half.cbore) <= TOL]
+    assert cbores  # a 3 mm steel wall from each counterbore to the recess and its lead-in
+    for c in cbores:
+        wall = math.hypot(c.x, c.y) - c.diameter / 2 - lay.gear_recess_d / 2 - 0.5
+        assert wall >= WALL_MIN_MM - TOL, (size, side, wall)
     gap = _feature(shape, lay.gap_journal)                          # running-gap seal
     assert gap is not None
     if side == "S":  # the bore takes the D spigot; its groove holds the O-ring (rod type)
@@ -178,13 +184,19 @@ def test_a_running_gap_that_eats_the_pilot_raises(catalog):
 
 
 @pytest.mark.parametrize("size", SIZES)
-def test_a_lip_below_the_wall_minimum_is_said(size, catalog):
-    """Where catalog φI and φB leave less than the 3 mm steel wall between the counterbores
-    and the gear recess, the part notes say so (FD-20: 0.75 mm, FD-25: 1 mm)."""
+def test_gear_recess_leaves_way_for_a_wall_and_says_so(size, catalog):
+    """Where catalog φI and φB would leave less than the 3 mm steel wall between the
+    spline-screw counterbores and the gear recess (FD-20: 0.75, FD-25: 1.0, FD-32: 2.5 mm),
+    the recess shrinks to the largest whole mm that keeps it (lead-in included) and the part
+    notes say so; elsewhere it is FD-0 φB."""
     half = FDCasingHalf(size, catalog, DesignOptions(), side="S")
-    lip = (half.fd2["I_mm"] - half.cbore - half.fd0["B_H7_mm"]) / 2
-    said = any("between the spline-screw counterbores" in n for n in half.build().notes)
-    assert said == (lip < WALL_MIN_MM)
+    fd2, fd0, lay = half.fd2, half.fd0, half.lay
+    lip = (fd2["I_mm"] - half.cbore - fd0["B_H7_mm"]) / 2 - 0.5
+    said = any("instead of FD-0 φB" in n for n in half.build().notes)
+    assert said == (lip < WALL_MIN_MM) == (lay.gear_recess_d < fd0["B_H7_mm"])
+    if said:
+        assert (fd2["I_mm"] - half.cbore - lay.gear_recess_d) / 2 - 0.5 >= WALL_MIN_MM
+        assert (fd2["I_mm"] - half.cbore - lay.gear_recess_d - 2) / 2 - 0.5 < WALL_MIN_MM
 
 
 @pytest.mark.parametrize("size", SIZES)
@@ -214,3 +226,18 @@ def test_lightening_groove_keeps_walls_and_reports_the_mass_saved(size, catalog,
     full = plain.build().solid().Volume()
     assert part.pockets_mm3 == pytest.approx(full - shape.Volume(), rel=1e-3)
     assert part.pockets_mm3 > 0.03 * full   # worth the turning: ≥ 3 % of the half
+
+
+@pytest.mark.parametrize("size", SIZES)
+def test_every_size_draws_from_its_step(size, catalog, tmp_path):
+    """The drawing checks every stated dimension against the STEP faces; a size whose
+    record names a face the solid lacks (e.g. a step that vanishes when the body keeps the
+    outer Ø) would stop the design with an internal error."""
+    from hdcad.geometry.drawing import part_drawing
+    for side in ("S", "D"):
+        part = FDCasingHalf(size, catalog, DesignOptions(), side=side).build()
+        path = tmp_path / f"{part.name}.step"
+        export_step(part, path)
+        result = part_drawing(path, part, tmp_path / f"{part.name}.svg")
+        assert result["views"][1]["section"] == "A–A"
+        assert result["dimensions"]

@@ -19,8 +19,8 @@ from ..checks.bolts import MIN_ENGAGEMENT
 from ..design_options import DesignOptions
 from .fd_layout import SPIGOT_DEPTH_MM, WALL_MIN_MM, FDLayout
 from .fd_notes import casing_notes
-from .features import TurnedRelief, annulus, lead_in, screw_and_grip
-from .housing_common import (CBORE_SINK_MM, CBORE_WALL_MIN_MM, EDGE_MARGIN_MM, check_ring,
+from .features import TurnedRelief, annulus, lead_in, screw_and_grip, shaft_lead_in
+from .housing_common import (CBORE_SINK_MM, EDGE_MARGIN_MM, check_ring,
                              slack, table_value)
 from .iso286 import iso286_fit
 from .part import BoltCircle, GeometricTolerance, Neighbour, Part
@@ -89,9 +89,9 @@ class FDCasingHalf:
         check_ring(f"{label} spline_screws", fd2["I_mm"], fd2["J_count"], self.clearance,
                    lay.relief_d, fd2["A_g7_mm"])
         check_ring(f"{label} spline_screws counterbore", fd2["I_mm"], fd2["J_count"],
-                   self.cbore, fd0["B_H7_mm"], lay.body_d, CBORE_WALL_MIN_MM)
+                   self.cbore, lay.gear_recess_d, lay.body_d, WALL_MIN_MM)
         check_ring(f"{label} gear_mount", fd0["K_mm"], fd0["L_count"],
-                   thread_diameter(self.gear_thread), fd0["B_H7_mm"], lay.body_d)
+                   thread_diameter(self.gear_thread), lay.gear_recess_d, lay.body_d)
         worst = min(slack(x, y, self.cbore / 2, self._gear_holes())
                     for x, y in ring_points(fd2["I_mm"], fd2["J_count"], 0.0))
         if worst < EDGE_MARGIN_MM:
@@ -168,16 +168,20 @@ class FDCasingHalf:
         cuts = [cylinder(fd2["A_g7_mm"], -1, p),
                 cylinder(lay.relief_d, p - 0.1, lay.relief_end),
                 cylinder(lay.bearing.D, p - 0.1, lay.shoulder_z),
+                self._seat_lead_in(),
                 lay.bore_ring.groove(lay.bearing_z - lay.bore_ring.m),
                 *lay.seal.bore(lay.shoulder_z, lay.seal_z),
-                cylinder(fd0["B_H7_mm"], lay.seal_z, t + 1),
-                lead_in(fd0["B_H7_mm"], t, 0.8, inward=False)]
+                cylinder(lay.gear_recess_d, lay.seal_z, t + 1),
+                lead_in(lay.gear_recess_d, t, 0.8, inward=False)]
         if self.side == "S":
             cuts += [cylinder(lay.gap_journal, -1, lay.s_bore_depth),
+                     lead_in(fd2["A_g7_mm"], lay.s_bore_depth, 0.8, inward=True),
                      lay.gap_gland.groove_in_bore(lay.gap_journal, lay.gap_seal_length / 2),
                      lead_in(lay.gap_journal, 0.0, 1.0, inward=True)]
         else:
-            cuts += [cylinder(lay.spigot_id, -(gap + lay.gap_seal_length) - 1, 0.5),
+            end = -(gap + lay.gap_seal_length)  # the spigot enters the S half's O-ring
+            cuts += [cylinder(lay.spigot_id, end - 1, 0.5),
+                     shaft_lead_in(lay.gap_journal, end, lay.gap_gland.d2 / 2, towards=-1),
                      lead_in(fd2["A_g7_mm"], 0.0, 0.8, inward=True)]
         for angle in self.port_angles:
             cuts += lay.port.cutters(lay.body_d / 2, lay.port_radius, lay.port_z, angle)
@@ -188,6 +192,15 @@ class FDCasingHalf:
             cuts.append(cylinder(self.tap_drill, t - fd0["M_depth_mm"], t + 1, x, y))
         return cuts
 
+    def _seat_lead_in(self):
+        """Lead-in where the bearings enter their seat from the spline side: at the recess
+        floor, or at the end of a wider relief (short of the DIN 472 groove's land n)."""
+        lay = self.lay
+        b, ring = lay.bearing, lay.bore_ring
+        if lay.relief_d > b.D:
+            return lead_in(b.D, lay.relief_end, min(1.0, 0.5 * ring.n), inward=True)
+        return lead_in(b.D, lay.pilot_depth, 1.0, inward=True)
+
     # -- record ----------------------------------------------------------------------------------
     def _bolt_circles(self) -> list[BoltCircle]:
         fd0, fd2, lay = self.fd0, self.fd2, self.lay
@@ -197,15 +210,15 @@ class FDCasingHalf:
                            grip_mm=self.grip),
                 BoltCircle("gear_mount", fd0["K_mm"], fd0["L_count"], self.tap_drill,
                            self.gear_thread, "tapped", fd0["M_depth_mm"],
-                           annulus_inner_mm=fd0["B_H7_mm"], annulus_outer_mm=lay.body_d,
+                           annulus_inner_mm=lay.gear_recess_d, annulus_outer_mm=lay.body_d,
                            start_angle_deg=self._gear_start_deg())]
 
     def _dimensions(self) -> dict[str, float]:
         lay, fd0, fd2 = self.lay, self.fd0, self.fd2
         dims = {"outer_diameter_mm": lay.outer_d, "body_diameter_mm": lay.body_d,
-                "front_length_mm": lay.front_length, "front_z_mm": lay.front_length,
+                "front_length_mm": lay.front_length,
                 "pilot_floor_z_mm": lay.pilot_depth, "pilot_recess_mm": fd2["A_g7_mm"],
-                "pilot_depth_mm": lay.pilot_depth, "spigot_recess_mm": fd0["B_H7_mm"],
+                "pilot_depth_mm": lay.pilot_depth, "spigot_recess_mm": lay.gear_recess_d,
                 "spigot_depth_mm": SPIGOT_DEPTH_MM, "bearing_seat_mm": lay.bearing.D,
                 "bearing_seat_z_mm": lay.bearing_z, "bearing_pair_width_mm": 2 * lay.bearing.B,
                 "shoulder_z_mm": lay.shoulder_z, "seal_recess_mm": lay.seal.d2,
@@ -220,6 +233,8 @@ class FDCasingHalf:
                 "gap_seal_length_mm":
                 lay.gap_seal_length, "unit_width_mm": lay.unit_width,
                 "counterbore_diameter_mm": self.cbore, "counterbore_depth_mm": self.cbore_depth}
+        if lay.outer_d > lay.body_d:  # the step behind the running-gap seal is a face
+            dims["front_z_mm"] = lay.front_length
         if self.relief is not None:
             dims.update(relief_groove_floor_mm=self.relief.floor_d,
                         relief_groove_z0_mm=self.relief.z0, relief_groove_z1_mm=self.relief.z1)
@@ -241,8 +256,10 @@ class FDCasingHalf:
                            "outer ring turns relative to its load (HOUSING_RULES §1)"),
                 iso286_fit(cat, "spline pilot recess", fd2["A_g7_mm"], "H7",
                            f"circular spline {self.side} φA g7 (table 312-1)", "catalog pilot"),
-                iso286_fit(cat, "gear/pulley spigot recess", fd0["B_H7_mm"], "H7",
-                           "user's gear or pulley (FD-0 φB H7, table 311-1)", "catalog pilot"),
+                iso286_fit(cat, "gear/pulley spigot recess", lay.gear_recess_d, "H7",
+                           "user's gear or pulley spigot g6", "FD-0 φB H7 (table 311-1)"
+                           if lay.gear_recess_d == fd0["B_H7_mm"] else
+                           "below FD-0 φB: a 3 mm wall to the spline-screw counterbores"),
                 iso286_fit(cat, "lip-seal bore", lay.seal.d2, "H8",
                            f"lip seal outer Ø{lay.seal.d2:g}", "ISO 6194-1 housing bore")]
         if self.side == "S":

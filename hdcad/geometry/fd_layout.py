@@ -42,6 +42,7 @@ SEAL_SET_BACK_MM = 2.0      # lip seal pressed this far below the recess floor: 
 #                             and still ends below the floor the user's gear centres on
 GAP_ORING_MAX_MM = 5.33     # largest O-ring cross-section considered for the running gap
 PORT_THREAD = "M10×1"
+RECESS_LEAD_IN_WIDENING_MM = 0.5  # the gear recess's lead-in chamfer widens it by this (radius)
 
 
 def ceil_to(value: float, step: float) -> float:
@@ -119,9 +120,23 @@ class FDLayout:
         # half's plain spigot (a piston-type gland is not advised for rotation)
         self.gap_journal = self.spigot_id + 2 * WALL_MIN_MM
         self.gap_groove_d = self.gap_journal + 2 * self.gap_gland.radial_depth
+        self.gear_recess_d = self._gear_recess()
         self.outer_d = max(self.fd0["A_mm"], ceil_to(self.gap_groove_d + 2 * WALL_MIN_MM, 1.0))
         # behind the running-gap seal the body steps down to the FD-0 outline where it can
         self.body_d = min(self.outer_d, max(self.fd0["A_mm"], self._least_body_d()))
+
+    def _gear_recess(self) -> float:
+        """Ø of the user's gear/pulley centring recess: FD-0 φB where the spline-screw
+        counterbores on FD-2 φI leave a WALL_MIN wall to it, else the largest whole mm that
+        does (sizes 20-32: φB and φI are too close for a machined wall)."""
+        from .standards import DIN_974_1_CBORE_MM
+        room = (self.fd2["I_mm"] - DIN_974_1_CBORE_MM[self.fd2["K_thread"]] - 2 * WALL_MIN_MM
+                - 2 * RECESS_LEAD_IN_WIDENING_MM)
+        recess = min(self.fd0["B_H7_mm"], math.floor(room))
+        if recess < self.seal.d2 + 2 * WALL_MIN_MM:
+            raise ValueError(f"the gear recess Ø{recess:g} leaves no floor around the seal "
+                             f"bore Ø{self.seal.d2:g}")
+        return recess
 
     def _least_body_d(self) -> float:
         """Least body Ø behind the seal: the gear holes and the spline-screw counterbores
@@ -151,7 +166,7 @@ class FDLayout:
                              f"S spline (least {PILOT_MIN_MM:g})")
         self.hub_end = fd2["E_mm"] / 2 - gap / 2
         port, ring = self.port, self.bore_ring
-        window = port.tap_drill + 2 * port.ligament_min
+        window = port.d + 2 * port.ligament_min  # ligaments from the thread's major Ø
         self.port_z = self.pilot_depth + window / 2
         # a relief wider than the seat ends n (DIN 472 edge distance) below the groove
         seat_end = ring.n if self.relief_d > self.bearing.D else 0.0

@@ -16,7 +16,8 @@ def _source_notes(half) -> list[str]:
     fd0, fd2, lay = half.fd0, half.fd2, half.lay
     notes = [
         f"seed 001 p.315: casings and bearings of an FD-2 differential follow the FD-0 unit; "
-        f"gear spigot recess Ø{fd0['B_H7_mm']:g} H7 = FD-0 φB, {fd0['L_count']} × "
+        f"gear spigot recess Ø{lay.gear_recess_d:g} H7 (FD-0 φB {fd0['B_H7_mm']:g}), "
+        f"{fd0['L_count']} × "
         f"{half.gear_thread}×{fd0['M_depth_mm']:g} on φK {fd0['K_mm']:g} (table 311-1); pilot "
         f"recess Ø{fd2['A_g7_mm']:g} H7 for the spline's φA g7, {fd2['J_count']} × "
         f"{half.screw} spline screws on φI {fd2['I_mm']:g} (table 312-1)",
@@ -32,16 +33,16 @@ def _source_notes(half) -> list[str]:
         f"gear_mount {half.gear_thread}×{fd0['M_depth_mm']:g}, modelled as tap-drill "
         f"Ø{half.tap_drill:g}, at {half._gear_start_deg():g}° + k·pitch (half a pitch off the "
         "spline screws)",
-        f"gear/pulley spigot recess Ø{fd0['B_H7_mm']:g} H7 × {SPIGOT_DEPTH_MM:g} mm: design "
-        "value (no standard depth)",
+        f"gear/pulley spigot recess Ø{lay.gear_recess_d:g} H7 × {SPIGOT_DEPTH_MM:g} mm: depth "
+        "a design value (no standard depth)",
     ]
-    lip = (fd2["I_mm"] - half.cbore - fd0["B_H7_mm"]) / 2
-    if lip < WALL_MIN_MM:
-        notes.append(f"only {lip:g} mm between the spline-screw counterbores and the "
-                     f"Ø{fd0['B_H7_mm']:g} gear recess over its {SPIGOT_DEPTH_MM:g} mm depth "
-                     f"(catalog φI {fd2['I_mm']:g} and φB are close; machined walls ≥ "
-                     f"{WALL_MIN_MM:g} mm in steel): machine the lip with care, or use screws "
-                     "with low heads (DIN 7984) and smaller counterbores")
+    if lay.gear_recess_d < fd0["B_H7_mm"]:
+        notes.append(f"gear recess Ø{lay.gear_recess_d:g} instead of FD-0 φB "
+                     f"{fd0['B_H7_mm']:g}: with φB the spline-screw counterbores on φI "
+                     f"{fd2['I_mm']:g} would leave "
+                     f"{(fd2['I_mm'] - half.cbore - fd0['B_H7_mm']) / 2:g} mm of wall, below the "
+                     f"{WALL_MIN_MM:g} mm a machined steel wall needs; the user's gear centres "
+                     "on this smaller spigot (not interchangeable with an FD-0 unit's gear)")
     if lay.unit_width > fd0["D_mm"]:
         notes.append(f"the unit is {lay.unit_width:g} mm wide instead of FD-0 D "
                      f"{fd0['D_mm']:g} mm: two bearings per half, the oil-port window, the "

@@ -13,7 +13,8 @@ from .fd_casing import COLORS, FDCasingHalf
 from .fd_notes import sleeve_notes
 from .iso286 import iso286_fit
 from .part import GeometricTolerance, Part
-from .primitives import cylinder, single_solid
+from .features import shaft_lead_in
+from .primitives import chamfer_circles, cylinder, single_solid
 
 MATERIAL = "C45 (EN ISO 683-1), seal track induction-hardened ≥ 45 HRC"
 
@@ -42,8 +43,12 @@ class FDSleeve:
         cuts = [cylinder(lay.shaft_d, self.z0 - 1, self.z1 + 1),
                 lay.shaft_ring.groove(lay.shoulder_z),
                 lay.shaft_gland.groove_in_bore(lay.shaft_d, self.oring_z),
-                _outer_chamfer(b.d, self.z1)]
+                shaft_lead_in(b.d, self.z1, 1.5, 20.0)]
         shape = single_solid(body, cuts, f"FD sleeve {self.side}")
+        # edge breaks: both bore ends (the sleeve slides onto the shaft) and the collar's
+        # hub-side edge; the collar's bearing face keeps its full Ø ≥ d_a,min
+        shape = chamfer_circles(shape, [(lay.shaft_d, self.z0), (lay.shaft_d, self.z1),
+                                        (lay.collar_d, self.z0)])
         return Part(name=f"sleeve_{self.side}", shape=shape, color=_lighter(COLORS[self.side]),
                     dimensions=self._dimensions(), notes=sleeve_notes(self),
                     purchased=self._purchased(), fits=self._fits(),
@@ -83,18 +88,6 @@ class FDSleeve:
     def _neighbours(self) -> list:
         from .fd_review import sleeve_neighbours
         return sleeve_neighbours(self)
-
-
-def _outer_chamfer(d: float, z_end: float, length: float = 1.5, angle_deg: float = 20.0):
-    """Lead-in at the shaft's outer end, ``angle_deg`` to the axis over ``length`` [mm], so
-    that the seal lip slides on (ISO 6194-1: 15-25°)."""
-    import math
-
-    import cadquery as cq
-    z0 = z_end - length
-    drop = (length + 1) * math.tan(math.radians(angle_deg))
-    kept = cq.Solid.makeCone(d / 2, d / 2 - drop, length + 1, cq.Vector(0, 0, z0))
-    return cylinder(d + 2, z0, z_end + 1).cut(kept).Solids()[0]
 
 
 def _lighter(color):

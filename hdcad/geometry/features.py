@@ -81,6 +81,20 @@ def lead_in(diameter: float, z_face: float, length: float, inward: bool,
                              length + 0.5, cq.Vector(0, 0, base), cq.Vector(0, 0, sign))
 
 
+def shaft_lead_in(d: float, z_end: float, length: float, angle_deg: float = LEAD_IN_DEG,
+                  towards: int = 1) -> cq.Solid:
+    """Cutter for a lead-in chamfer on the end of a shaft or spigot Ø ``d`` whose end face is
+    at ``z_end`` and which ends towards +z (``towards`` 1) or −z (−1): ``angle_deg`` to the
+    axis over ``length`` [mm], so that a seal lip or an O-ring slides on without being cut
+    (ISO 6194-1, ISO 3601-2: 15-25°)."""
+    drop = (length + 1) * math.tan(math.radians(angle_deg))
+    base = z_end - towards * length
+    kept = cq.Solid.makeCone(d / 2, d / 2 - drop, length + 1, cq.Vector(0, 0, base),
+                             cq.Vector(0, 0, towards))
+    lo, hi = sorted((base, z_end + towards))
+    return cylinder(d + 2, lo, hi).cut(kept).Solids()[0]
+
+
 @dataclass(frozen=True)
 class Bearing:
     """A 60xx deep groove ball bearing (ISO 15) with its DIN 5418 abutment limits."""

@@ -59,3 +59,19 @@ def break_outer_edges(part: cq.Workplane, outer_d: float | None = None,
     if not edges:
         return part
     return cq.Workplane("XY").add(solid.chamfer(size, None, edges))
+
+
+def chamfer_circles(part: cq.Workplane, circles: list[tuple[float, float]],
+                    size: float = EDGE_BREAK_MM) -> cq.Workplane:
+    """Chamfer ``size`` × 45° on the circular edges of diameter d at axial position z, for
+    each (d, z) [mm] in ``circles`` (edges on the Z axis); circles not found are skipped."""
+    def wanted(edge) -> bool:
+        if edge.geomType() != "CIRCLE":
+            return False
+        c, r = edge.Center(), edge.radius()
+        return any(abs(2 * r - d) < 1e-6 and abs(c.z - z) < 1e-6 and math.hypot(c.x, c.y) < 1e-6
+                   for d, z in circles)
+
+    solid = part.val()
+    edges = [e for e in solid.Edges() if wanted(e)]
+    return cq.Workplane("XY").add(solid.chamfer(size, None, edges)) if edges else part

@@ -185,15 +185,18 @@ def section_mask(bodies: list[Body], angle_deg: float, r_max: float, z_range: tu
 
 
 def _moving_contacts(owner, sealed):
-    """Cells of one group that touch a cell of another group (4-neighbours), not at a seal."""
+    """Cells of one group that touch a cell of another group (8-neighbours: a contact that
+    runs at a slant, e.g. where a lead-in chamfer meets a bore, touches only diagonally on
+    the grid), not at a seal."""
     import numpy as np
     out = np.zeros(owner.shape, bool)
-    for axis in (0, 1):
-        for shift in (1, -1):
-            other = np.roll(owner, shift, axis=axis)
-            other_sealed = np.roll(sealed, shift, axis=axis)
-            edge = (owner >= 0) & (other >= 0) & (other != owner) & ~other_sealed
-            out |= edge
+    for dz in (-1, 0, 1):
+        for dr in (-1, 0, 1):
+            if dz == dr == 0:
+                continue
+            other = np.roll(owner, (dz, dr), axis=(0, 1))
+            other_sealed = np.roll(sealed, (dz, dr), axis=(0, 1))
+            out |= (owner >= 0) & (other >= 0) & (other != owner) & ~other_sealed
     return out & ~sealed
 
 

@@ -32,17 +32,17 @@ def running_rows(sheet: Sheet, dims: list[Dimension], m: Measured, scale: float
     for d in sorted((d for d in dims if is_running(d)), key=lambda d: d.z1):
         x = (d.z1 - m.box.zmin) * scale
         box = (x - TEXT_OFFSET_MM - h, x - TEXT_OFFSET_MM + 0.01)
-        for k in range(len(rows) + 1):
-            if k == len(rows):
-                rows.append([])
+        for k, row in enumerate(rows):
             same = all(not (box[0] < xo + 0.4 and xo - TEXT_OFFSET_MM - h - 0.4 < box[1])
-                       for xo, _ in rows[k])
+                       for xo, _ in row)
             # this line's extension line crosses every lower line's texts
             lower = all(not (xo - TEXT_OFFSET_MM - h - 0.4 < x < xo + 0.4)
-                        for row in rows[:k] for xo, _ in row)
+                        for below in rows[:k] for xo, _ in below)
             if same and lower:
-                rows[k].append((x, d))
+                row.append((x, d))
                 break
+        else:  # a new line above the others
+            rows.append([(x, d)])
     return [[d for _, d in row] for row in rows]
 
 
