@@ -94,7 +94,13 @@ def test_casing_half_measured_from_step(size, side, catalog, tmp_path):
     screws, gear = part.bolt_circles
     assert len(_holes_on_circle(shape, screws.diameter_mm, screws.hole_diameter_mm)) == \
         screws.count
-    assert len(_holes_on_circle(shape, gear.diameter_mm, gear.hole_diameter_mm)) == gear.count
+    gear_holes = _holes_on_circle(shape, gear.diameter_mm, gear.hole_diameter_mm)
+    assert len(gear_holes) == gear.count
+    # HOUSING_RULES §4: hole centres ≥ 1.5·d from the outer surface they sit under
+    assert _feature(shape, lay.body_d) is not None
+    d = float(gear.thread.lstrip("M"))
+    for x, y in gear_holes:
+        assert lay.body_d / 2 - math.hypot(x, y) >= 1.5 * d - TOL
     # two radial oil ports: tap drill and spot face, at the port height
     drills = _radial_holes(shape, lay.port.tap_drill)
     spots = _radial_holes(shape, lay.port.spot_face)
@@ -217,10 +223,12 @@ def test_lightening_groove_keeps_walls_and_reports_the_mass_saved(size, catalog,
     assert floor.z0 >= relief.z0 - TOL and floor.z1 <= relief.z1 + TOL
     holes = [c for c in z_cylinders(shape) if abs(c.diameter - half.clearance) <= TOL]
     assert holes
-    for c in holes:  # wall over each clearance hole, measured on the solid's faces
+    d = float(half.screw.lstrip("M"))
+    for c in holes:  # wall over each clearance hole and its centre 1.5·d deep (HOUSING_RULES §4)
         assert relief.floor_d / 2 - (math.hypot(c.x, c.y) + c.diameter / 2) >= WALL_MIN_MM - TOL
+        assert relief.floor_d / 2 - math.hypot(c.x, c.y) >= 1.5 * d - TOL
     spot = lay.port_z + lay.port.spot_face / 2
-    assert relief.z0 - spot >= WALL_MIN_MM - TOL
+    assert relief.z0 - spot >= lay.port.ligament_min - TOL   # HOUSING_RULES §2 port ligament
     plain = copy.copy(half)
     plain.relief = None
     full = plain.build().solid().Volume()

@@ -126,8 +126,10 @@ class FDCasingHalf:
         outer face, down to a wall over the spline-screw clearance holes; none when shorter
         than RELIEF_MIN_MM."""
         lay, fd0 = self.lay, self.fd0
-        floor_d = self.fd2["I_mm"] + self.clearance + 2 * WALL_MIN_MM
-        z0 = max(lay.front_length, lay.port_z + lay.port.spot_face / 2) + WALL_MIN_MM
+        d = thread_diameter(self.screw)  # a wall over the holes, their centres 1.5·d deep
+        floor_d = self.fd2["I_mm"] + max(self.clearance + 2 * WALL_MIN_MM, 2 * 1.5 * d)
+        z0 = max(lay.front_length + WALL_MIN_MM,
+                 lay.port_z + lay.port.spot_face / 2 + lay.port.ligament_min)
         z1 = min(lay.thickness - self.cbore_depth,
                  lay.thickness - fd0["M_depth_mm"] - self.tap_drill) - WALL_MIN_MM
         if z1 - z0 < RELIEF_MIN_MM or lay.body_d - floor_d < 2 * RELIEF_MIN_DEPTH_MM:
@@ -176,7 +178,7 @@ class FDCasingHalf:
         if self.side == "S":
             cuts += [cylinder(lay.gap_journal, -1, lay.s_bore_depth),
                      lead_in(fd2["A_g7_mm"], lay.s_bore_depth, 0.8, inward=True),
-                     lay.gap_gland.groove_in_bore(lay.gap_journal, lay.gap_seal_length / 2),
+                     lay.gap_gland.groove_in_bore(lay.gap_journal, lay.gap_groove_z),
                      lead_in(lay.gap_journal, 0.0, 1.0, inward=True)]
         else:
             end = -(gap + lay.gap_seal_length)  # the spigot enters the S half's O-ring

@@ -32,7 +32,8 @@ from .features import Bearing, LipSeal, OringGland, PlugPort, RetainingRing
 WALL_MIN_MM = 3.0           # machined steel wall (HOUSING_RULES §4)
 SPIGOT_CLEARANCE_MM = 0.5   # radial: the D half's spigot over the S spline (they turn)
 SPIGOT_END_CLEARANCE_MM = 0.5  # axial: spigot end to the bottom of the S half's bore
-GLAND_LAND_MM = 2.0         # spigot land each side of the running-gap O-ring groove
+GLAND_LAND_MM = 2.0         # land between the running-gap O-ring groove and the bore bottom
+# the land on the open-face side is a steel wall (WALL_MIN_MM) at the S half's face
 PILOT_MIN_MM = 3.0          # least pilot length left for the S spline beside the gap seal
 LEVEL_MARGIN_MM = 2.0       # the port opening reaches this far below level A
 SEAL_CLEARANCE_MM = 0.5     # between the DIN 471 ring and the lip seal
@@ -42,6 +43,7 @@ SEAL_SET_BACK_MM = 2.0      # lip seal pressed this far below the recess floor: 
 #                             and still ends below the floor the user's gear centres on
 GAP_ORING_MAX_MM = 5.33     # largest O-ring cross-section considered for the running gap
 PORT_THREAD = "M10×1"
+EDGE_FACTOR = 1.5           # hole centre ≥ 1.5·d from the outer edge (HOUSING_RULES §4)
 RECESS_LEAD_IN_WIDENING_MM = 0.5  # the gear recess's lead-in chamfer widens it by this (radius)
 
 
@@ -142,7 +144,9 @@ class FDLayout:
         """Least body Ø behind the seal: the gear holes and the spline-screw counterbores
         keep a wall, and the body carries the port spot faces."""
         from .standards import DIN_974_1_CBORE_MM, thread_diameter
-        gear = self.fd0["K_mm"] + thread_diameter(self.fd0["M_thread"]) + 2 * WALL_MIN_MM
+        d = thread_diameter(self.fd0["M_thread"])
+        # the gear holes keep a wall and their centres 1.5·d from the outside (HOUSING_RULES §4)
+        gear = self.fd0["K_mm"] + max(d + 2 * WALL_MIN_MM, 2 * EDGE_FACTOR * d)
         cbore = self.fd2["I_mm"] + DIN_974_1_CBORE_MM[self.fd2["K_thread"]] + 2 * WALL_MIN_MM
         return max(gear, cbore)
 
@@ -157,7 +161,8 @@ class FDLayout:
         if self.pilot_depth <= 0:
             raise ValueError(f"{self.label}: running_gap_mm {gap:g} leaves no pilot recess "
                              f"(FD-2 B {fd2['B_mm']:g}, C {fd2['C_mm']:g})")
-        self.gap_seal_length = self.gap_gland.radial_width + 2 * GLAND_LAND_MM
+        self.gap_seal_length = self.gap_gland.radial_width + WALL_MIN_MM + GLAND_LAND_MM
+        self.gap_groove_z = WALL_MIN_MM + self.gap_gland.radial_width / 2  # groove centre
         self.s_bore_depth = self.gap_seal_length + SPIGOT_END_CLEARANCE_MM
         self.front_length = self.s_bore_depth + WALL_MIN_MM  # full Ø ring at the gap seal
         if self.pilot_depth - self.s_bore_depth < PILOT_MIN_MM:

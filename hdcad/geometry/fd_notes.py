@@ -49,10 +49,12 @@ def _source_notes(half) -> list[str]:
                      "retaining rings and the lip seal need the room (FD-0's own arrangement is "
                      "in the lost figure 311-1)")
     if half.relief is not None:
-        notes.append(half.relief.text() + f": {WALL_MIN_MM:g} mm over the spline-screw "
-                     f"clearance holes, {WALL_MIN_MM:g} mm clear of the port spot faces and of "
-                     "the counterbores and gear holes from the outer face (pockets where "
-                     "material carries nothing; mass before and after in results.json)")
+        notes.append(half.relief.text() + f": ≥ {WALL_MIN_MM:g} mm and 1.5·d over the "
+                     "spline-screw clearance holes, the port ligament "
+                     f"{half.lay.port.ligament_min:g} mm from the spot faces, "
+                     f"{WALL_MIN_MM:g} mm from the counterbores and gear holes of the outer "
+                     "face (pockets where material carries nothing; mass before and after in "
+                     "results.json)")
     return notes
 
 
@@ -90,7 +92,7 @@ def _seal_notes(half) -> list[str]:
         f"{SPIGOT_CLEARANCE_MM:g} mm clear of the S spline) reaches {lay.gap_seal_length:g} mm "
         f"into the S half's Ø{lay.gap_journal:g} H8 bore; "
         + gland.text(where, lay.gap_journal)
-        + f", lands {GLAND_LAND_MM:g} mm. The halves turn slowly against each other (output "
+        + f", lands {WALL_MIN_MM:g} mm at the face and {GLAND_LAND_MM:g} mm inside. The halves turn slowly against each other (output "
         "speed, or about line-shaft speed / (R + 1) in differential use), so an O-ring as a "
         "slow rotary seal fits in the FD-0 outline where a lip seal would not; the "
         "gap_seal_speed check compares its surface speed with hdcad's limit",

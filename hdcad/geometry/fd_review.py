@@ -22,7 +22,7 @@ def casing_neighbours(half) -> list[Neighbour]:
     out += _spline_screws(half)
     out.append(_circular_spline(half))
     if half.side == "S":
-        z_mid, gland = lay.gap_seal_length / 2, lay.gap_gland
+        z_mid, gland = lay.gap_groove_z, lay.gap_gland
         out.append(Neighbour("oring", f"O-ring ×{gland.d2:g}", {"d2": gland.d2}, z_mid,
                              body=gland.ring_in_bore(lay.gap_journal, z_mid)))
         out += _hub_and_shaft(half)
