@@ -101,6 +101,14 @@ def test_casing_half_measured_from_step(size, side, catalog, tmp_path):
     d = float(gear.thread.lstrip("M"))
     for x, y in gear_holes:
         assert lay.body_d / 2 - math.hypot(x, y) >= 1.5 * d - TOL
+    # each tapped hole starts with a 90° countersink at the outer face (Ø 1.05·d)
+    cones = [f for f in shape.Faces() if f.geomType() == "CONE"
+             and f.BoundingBox().zmax == pytest.approx(lay.thickness, abs=TOL)
+             and any(math.dist((f.Center().x, f.Center().y), h) < 0.1 for h in gear_holes)]
+    assert len(cones) == gear.count
+    for f in cones:
+        box = f.BoundingBox()
+        assert box.xlen == pytest.approx(1.05 * d, abs=0.02)
     # two radial oil ports: tap drill and spot face, at the port height
     drills = _radial_holes(shape, lay.port.tap_drill)
     spots = _radial_holes(shape, lay.port.spot_face)

@@ -45,7 +45,7 @@ from .housing_common import (BEARING_TABLE, CBORE_SINK_MM, MIN_FLOOR_MM, SEAL_TA
 from .component_review import (cover_fits, cover_neighbours, flange_fits, flange_neighbours,
                                housing_fits, housing_neighbours)
 from .component_support import Retention
-from .features import screw_and_grip
+from .features import countersink, screw_and_grip
 from .flanges import TAP_RUNOUT_PITCHES
 from .part import BoltCircle, Part
 from .primitives import cylinder, ring_points, single_solid
@@ -313,8 +313,9 @@ class ComponentSetHousing:
                    cylinder(self.out_D, self.z_wall - 1, self.z_shoulder),
                    out.ring_bore.groove(self.zb - out.ring_bore.m)]
         cutters += out.seal_bore(self.z_shoulder, z1 + MOUNT_SPIGOT_MM)
-        cutters += [cylinder(self.cs_tap, -1, self.cs_drill, x, y)
-                    for x, y in ring_points(o["cs_bolt_circle_mm"], self.cs_count, 0.0)]
+        cutters += [c for x, y in ring_points(o["cs_bolt_circle_mm"], self.cs_count, 0.0)
+                    for c in (cylinder(self.cs_tap, -1, self.cs_drill, x, y),
+                              countersink(thread_diameter(self.cs_thread), 0.0, x, y, into=1))]
         cutters += [cylinder(ISO_273_MEDIUM_MM[self.mount_thread], z1 - self.mount_t - 1,
                              z1 + 1, x, y)
                     for x, y in ring_points(self.mount_bc, self.mount_count, MOUNT_START_DEG)]
@@ -354,8 +355,9 @@ class ComponentSetHousing:
                 .extrude(collar_end - self.flange_t)
                 .faces(">Z").workplane().circle(self.out_d / 2)
                 .extrude(self.journal_len - (collar_end - self.flange_t)))
-        cutters = [cylinder(self.fs_tap, -1, self.fs_drill, x, y)
-                   for x, y in ring_points(o["fs_bolt_circle_mm"], self.fs_count, 0.0)]
+        cutters = [c for x, y in ring_points(o["fs_bolt_circle_mm"], self.fs_count, 0.0)
+                   for c in (cylinder(self.fs_tap, -1, self.fs_drill, x, y),
+                             countersink(thread_diameter(self.fs_thread), 0.0, x, y, into=1))]
         cutters.append(out.ring_shaft.groove(self.z_shoulder - fs))
         shape = single_solid(body.val(), cutters, self.label)
         return Part("output_flange", shape, COLORS["output_flange"],

@@ -19,7 +19,8 @@ from ..checks.bolts import MIN_ENGAGEMENT
 from ..design_options import DesignOptions
 from .fd_layout import SPIGOT_DEPTH_MM, WALL_MIN_MM, FDLayout
 from .fd_notes import casing_notes
-from .features import TurnedRelief, annulus, lead_in, screw_and_grip, shaft_lead_in
+from .features import (TurnedRelief, annulus, countersink, lead_in, screw_and_grip,
+                       shaft_lead_in)
 from .housing_common import (CBORE_SINK_MM, EDGE_MARGIN_MM, check_ring,
                              slack, table_value)
 from .iso286 import iso286_fit
@@ -191,7 +192,8 @@ class FDCasingHalf:
             cuts += [cylinder(self.clearance, p - 1, t + 1, x, y),
                      cylinder(self.cbore, t - self.cbore_depth, t + 1, x, y)]
         for x, y, _ in self._gear_holes():
-            cuts.append(cylinder(self.tap_drill, t - fd0["M_depth_mm"], t + 1, x, y))
+            cuts += [cylinder(self.tap_drill, t - fd0["M_depth_mm"], t + 1, x, y),
+                     countersink(thread_diameter(self.gear_thread), t, x, y)]
         return cuts
 
     def _seat_lead_in(self):
@@ -216,7 +218,7 @@ class FDCasingHalf:
                            start_angle_deg=self._gear_start_deg())]
 
     def _dimensions(self) -> dict[str, float]:
-        lay, fd0, fd2 = self.lay, self.fd0, self.fd2
+        lay, fd2 = self.lay, self.fd2
         dims = {"outer_diameter_mm": lay.outer_d, "body_diameter_mm": lay.body_d,
                 "front_length_mm": lay.front_length,
                 "pilot_floor_z_mm": lay.pilot_depth, "pilot_recess_mm": fd2["A_g7_mm"],

@@ -81,6 +81,20 @@ def lead_in(diameter: float, z_face: float, length: float, inward: bool,
                              length + 0.5, cq.Vector(0, 0, base), cq.Vector(0, 0, sign))
 
 
+COUNTERSINK_FACTOR = 1.05  # countersink Ø at a tapped hole's entry / thread Ø (DIN 76-1 practice)
+
+
+def countersink(d_thread: float, z_face: float, x: float = 0.0, y: float = 0.0,
+                into: int = -1) -> cq.Solid:
+    """90° countersink cutter at the entry of a tapped hole whose face is at ``z_face`` and
+    whose hole runs towards ``into`` (−1: −z, +1: +z): Ø 1.05·d at the face, so the first
+    thread does not raise a burr on the face and the screw starts cleanly."""
+    r = COUNTERSINK_FACTOR * d_thread / 2
+    extra = 0.5
+    return cq.Solid.makeCone(r + extra, 0.0, r + extra,
+                             cq.Vector(x, y, z_face - into * extra), cq.Vector(0, 0, into))
+
+
 def shaft_lead_in(d: float, z_end: float, length: float, angle_deg: float = LEAD_IN_DEG,
                   towards: int = 1) -> cq.Solid:
     """Cutter for a lead-in chamfer on the end of a shaft or spigot Ø ``d`` whose end face is

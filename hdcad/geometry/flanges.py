@@ -19,6 +19,7 @@ import cadquery as cq
 from ..catalog import Catalog
 from ..design_options import DesignOptions
 from .drive_feature import drive_feature
+from .features import countersink
 from .gh_interface import NOT_FOR_MANUFACTURE, gear_head_face
 from .iso286 import iso286_fit
 from .part import BoltCircle, Part
@@ -311,7 +312,8 @@ class GHMotorFlange:
         cutters = [cylinder(self.bore, -1, t + 1),
                    cylinder(self.pilot, t - self.pilot_depth, t + 1)]
         for x, y in ring_points(self.ring, MOTOR_HOLE_COUNT, MOTOR_HOLE_START_DEG):
-            cutters.append(cylinder(self.tap_drill, t - self.drill_depth, t + 1, x, y))
+            cutters += [cylinder(self.tap_drill, t - self.drill_depth, t + 1, x, y),
+                        countersink(thread_diameter(self.thread), t, x, y)]
         circles = [BoltCircle("motor screws", self.ring, MOTOR_HOLE_COUNT, self.tap_drill,
                               self.thread, "tapped", self.thread_depth,
                               annulus_inner_mm=self.pilot, annulus_outer_mm=self.outer,

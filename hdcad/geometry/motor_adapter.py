@@ -23,7 +23,7 @@ from dataclasses import dataclass
 from ..catalog import Catalog
 from ..checks.bolts import MIN_ENGAGEMENT
 from ..design_options import DesignOptions
-from .features import screw_body, screw_for_grip
+from .features import countersink, screw_body, screw_for_grip
 from .iso286 import iso286_fit
 from .part import BoltCircle, Neighbour, Part
 from .primitives import break_outer_edges, cylinder, ring_points, single_solid
@@ -237,6 +237,8 @@ class MotorAdapter:
         for x, y in ring_points(self.motor.bolt_circle_mm, self.motor.bolt_count,
                                 self.motor_start):
             cuts.append(cylinder(self.motor_hole, m_from, t + 1, x, y))
+            if self.motor.holes == "clearance":  # tapped here: countersunk entry
+                cuts.append(countersink(thread_diameter(self.motor.bolt_thread), t, x, y))
         shape = single_solid(body, cuts, self.label)
         shape = break_outer_edges(shape, size if kind == "round" else None,
                                   size if kind == "square" else None)
