@@ -82,6 +82,23 @@ def test_plate_measured_from_step(plate):
     assert {f.code for f in part.fits} == {"g6", "H7"}
 
 
+def test_both_faces_carry_a_static_o_ring_groove(plate):
+    """Seed 000 p.028: O-ring or sealant on flange faces. ISO 3601-2 face gland for d2 1.78:
+    width 2.5, depth 1.33 (catalog oring_gland_iso3601), lands 1.5 mm: gear-head face from
+    spigot Ø80 + 3 = Ø83 to Ø88 (flange holes Ø6.6 on Ø100 leave to Ø93.4); motor face from
+    recess Ø73 + 3 = Ø76 to Ø81 (the M6 counterbores Ø11 on Ø100 leave to Ø89)."""
+    part, shape = plate
+    t = part.dimensions["thickness_mm"]
+    faces = {}
+    for c in axial_features(z_cylinders(shape)):
+        faces.setdefault(round(c.diameter, 3), []).append((round(c.z0, 3), round(c.z1, 3)))
+    assert (0.0, 1.33) in faces[83.0] and (0.0, 1.33) in faces[88.0]
+    assert (round(t - 1.33, 3), t) in faces[76.0] and (round(t - 1.33, 3), t) in faces[81.0]
+    orings = [n for n in part.neighbours if n.kind == "oring"]
+    assert len(orings) == 2
+    assert sum(p["item"] == "O-ring" for p in part.purchased) == 2
+
+
 def test_review_assembly_has_no_overlap_and_screws_engage(plate):
     part, _ = plate
     bodies = review.review_bodies([part])

@@ -295,6 +295,19 @@ class OringGland:
         half = self.radial_width * 0.4
         return annulus(bore_d, bore_d + 2 * self.radial_depth, z_mid - half, z_mid + half)
 
+    def groove_in_face(self, inner_d: float, z_face: float, into: int) -> cq.Solid:
+        """Face groove (static, ISO 3601-2 proportions) from Ø inner_d outwards in a face at
+        ``z_face`` whose material lies towards ``into`` (+1: +z, −1: −z)."""
+        z1 = z_face + into * self.face_depth
+        lo, hi = sorted((z_face - into, z1))
+        return annulus(inner_d, inner_d + 2 * self.face_width, lo, hi)
+
+    def ring_in_face(self, inner_d: float, z_face: float, into: int) -> cq.Solid:
+        """The O-ring squeezed in that groove: groove bottom to the mating face."""
+        lo, hi = sorted((z_face, z_face + into * self.face_depth))
+        w = self.face_width
+        return annulus(inner_d + 0.2 * w, inner_d + 1.8 * w, lo, hi)
+
     def text(self, where: str, diameter: float) -> str:
         squeeze = 100 * (1 - self.radial_depth / self.d2)
         return (f"O-ring cross-section {self.d2:g} (ISO 3601-1) {where} Ø{diameter:g}: radial "

@@ -23,7 +23,7 @@ from dataclasses import dataclass
 from ..catalog import Catalog
 from ..checks.bolts import MIN_ENGAGEMENT
 from ..design_options import DesignOptions
-from .features import countersink, screw_body, screw_for_grip
+from .features import OringGland, countersink, screw_body, screw_for_grip
 from .iso286 import iso286_fit
 from .part import BoltCircle, Neighbour, Part
 from .primitives import break_outer_edges, cylinder, ring_points, single_solid
@@ -39,6 +39,8 @@ EDGE_FACTOR = 1.5           # hole centre ≥ 1.5·d from the outline (HOUSING_R
 LIGAMENT_MM = 2.0           # least ligament between holes (HOUSING_RULES §4)
 DIRECT_TOL_MM = 0.05        # a pilot or bolt circle this close counts as the same
 COLOR = (0.55, 0.62, 0.74)
+FACE_ORING_D2_MM = 1.78     # static face O-rings: the thinnest ISO 3601-1 section fits the rings
+FACE_LAND_MM = 1.5          # land each side of a face groove
 
 
 @dataclass(frozen=True)
@@ -128,6 +130,39 @@ class MotorAdapter:
         self.motor_start = self._clocking()
         self.outline = self._outline()
         self._check()
+        self.gland = OringGland.from_catalog(catalog, FACE_ORING_D2_MM)
+        self.face_glands = self._face_glands()
+
+    def _face_glands(self) -> dict[str, float]:
+        """Inner Ø of the static face O-ring grooves (seed 000 p.028: O-ring or sealant on
+        flange faces) on the gear-head face (outside the spigot, inside the flange screws) and
+        the motor face (outside the recess, inside the motor holes and counterbores), where a
+        groove with FACE_LAND_MM lands fits; a face without one is sealed with liquid gasket."""
+        row, m = self.row, self.motor
+        motor_holes = m.bolt_circle_mm - max(self.motor_hole, 1.05 * self.d_motor)
+        limits = {"gear-head face": (row["pilot_H7_mm"],
+                                     row["bolt_circle_mm"] - self.flange_hole),
+                  "motor face": (m.pilot_diameter_mm,
+                                 motor_holes if self.cbore_from_recess else
+                                 min(motor_holes, row["bolt_circle_mm"] - self.cbore))}
+        out = {}
+        for face, (inner, outer) in limits.items():
+            d_in = inner + 2 * FACE_LAND_MM
+            if d_in + 2 * self.gland.face_width + 2 * FACE_LAND_MM <= outer:
+                out[face] = d_in
+        return out
+
+    def face_cutters(self) -> list:
+        faces = {"gear-head face": (0.0, 1), "motor face": (self.thickness, -1)}
+        return [self.gland.groove_in_face(d_in, *faces[face])
+                for face, d_in in self.face_glands.items()]
+
+    def face_orings(self) -> list[Neighbour]:
+        faces = {"gear-head face": (0.0, 1), "motor face": (self.thickness, -1)}
+        return [Neighbour("oring", f"O-ring {d_in:.0f}×{self.gland.d2:g} ({face})",
+                          {"d2": self.gland.d2}, faces[face][0],
+                          body=self.gland.ring_in_face(d_in, *faces[face]))
+                for face, d_in in self.face_glands.items()]
 
     # -- holes -------------------------------------------------------------------------------
     def _motor_holes(self) -> None:
@@ -239,7 +274,7 @@ class MotorAdapter:
             cuts.append(cylinder(self.motor_hole, m_from, t + 1, x, y))
             if self.motor.holes == "clearance":  # tapped here: countersunk entry
                 cuts.append(countersink(thread_diameter(self.motor.bolt_thread), t, x, y))
-        shape = single_solid(body, cuts, self.label)
+        shape = single_solid(body, cuts + self.face_cutters(), self.label)
         shape = break_outer_edges(shape, size if kind == "round" else None,
                                   size if kind == "square" else None)
         return Part(name="motor_adapter", shape=shape, color=COLOR, **adapter_record(self))

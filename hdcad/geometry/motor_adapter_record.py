@@ -26,8 +26,13 @@ def adapter_record(a) -> dict:
                                               "HOUSING_RULES §4: pilot runout ≤ 0.02-0.03")],
             "purchased": [{"item": "screw", "designation": f"ISO 4762 {a.row['thread']}×"
                            f"{length if length else '?'}", "quantity": 4,
-                           "note": f"plate to flange {a.row['flange_code']}"}],
-            "neighbours": a.neighbour_screws() + [_flange_body(a), _motor_body(a)],
+                           "note": f"plate to flange {a.row['flange_code']}"}]
+            + [{"item": "O-ring", "designation": f"O-ring ID ≈ {d_in:.0f} × {a.gland.d2:g} "
+                "(ISO 3601-1: the nearest size at or below)", "quantity": 1,
+                "note": f"static seal, {face}"}
+               for face, d_in in a.face_glands.items()],
+            "neighbours": (a.neighbour_screws() + [_flange_body(a), _motor_body(a)]
+                           + a.face_orings()),
             "material": MATERIALS[a.options.material]}
 
 
@@ -68,6 +73,14 @@ def _notes(a, length, engaged) -> list[str]:
         f"(Ø{m.shaft_diameter_mm:g} × {m.shaft_length_mm:g}) reaches {a.thickness:g} mm less "
         "far into the input coupling (motor_shaft_reach check)",
     ]
+    for face, d_in in a.face_glands.items():
+        notes.append(f"{face}: O-ring × {a.gland.d2:g} in a face groove Ø{d_in:g}-"
+                     f"{d_in + 2 * a.gland.face_width:g} × {a.gland.face_depth:g} deep "
+                     "(ISO 3601-2 proportions; seed 000 p.028 asks for O-ring or sealant on "
+                     "flange faces)")
+    for face in {"gear-head face", "motor face"} - set(a.face_glands):
+        notes.append(f"{face}: no room for a face groove: seal with liquid gasket "
+                     "(seed 000 p.028)")
     return notes
 
 
