@@ -17,7 +17,7 @@ from __future__ import annotations
 from ..catalog import Catalog
 from ..checks.bolts import MIN_ENGAGEMENT
 from ..design_options import DesignOptions
-from .fd_layout import SPIGOT_DEPTH_MM, WALL_MIN_MM, FDLayout
+from .fd_layout import EDGE_FACTOR, SPIGOT_DEPTH_MM, WALL_MIN_MM, FDLayout
 from .fd_notes import casing_notes
 from .features import (TurnedRelief, annulus, countersink, lead_in, screw_and_grip,
                        shaft_lead_in)
@@ -128,7 +128,7 @@ class FDCasingHalf:
         than RELIEF_MIN_MM."""
         lay, fd0 = self.lay, self.fd0
         d = thread_diameter(self.screw)  # a wall over the holes, their centres 1.5·d deep
-        floor_d = self.fd2["I_mm"] + max(self.clearance + 2 * WALL_MIN_MM, 2 * 1.5 * d)
+        floor_d = self.fd2["I_mm"] + max(self.clearance + 2 * WALL_MIN_MM, 2 * EDGE_FACTOR * d)
         z0 = max(lay.front_length + WALL_MIN_MM,
                  lay.port_z + lay.port.spot_face / 2 + lay.port.ligament_min)
         z1 = min(lay.thickness - self.cbore_depth,

@@ -32,7 +32,7 @@ from .gh_interface import GearHeadFace
 from .iso286 import iso286_fit
 from .part import BoltCircle, GeometricTolerance, Part
 from .primitives import break_outer_edges, cylinder, ring_points, single_solid
-from .standards import ISO_273_MEDIUM_MM, ISO_4762_HEAD_MM, thread_diameter
+from .standards import ISO_4762_HEAD_MM, thread_diameter
 
 TABLE = "gh_mounting_interface"
 FLOOR_MM = 3.0              # least material under a counterbore or the recess
@@ -153,4 +153,4 @@ def mounting_plate(catalog: Catalog, series: str, size: int) -> GHMountingPlate 
                                                     f"{series}-{size} mounting plate")
 
 
-__all__ = ["GHMountingPlate", "mounting_plate", "ISO_273_MEDIUM_MM"]
+__all__ = ["GHMountingPlate", "mounting_plate"]
