@@ -40,7 +40,7 @@ LIGAMENT_MM = 2.0           # least ligament between holes (HOUSING_RULES §4)
 DIRECT_TOL_MM = 0.05        # a pilot or bolt circle this close counts as the same
 COLOR = (0.55, 0.62, 0.74)
 FACE_ORING_D2_MM = 1.78     # static face O-rings: the thinnest ISO 3601-1 section fits the rings
-FACE_LAND_MM = 1.5          # land each side of a face groove
+FACE_LAND_MM = 1.5          # land between a face groove and the pilot (groove flank, ISO 3601-2)
 
 
 @dataclass(frozen=True)
@@ -139,16 +139,20 @@ class MotorAdapter:
         the motor face (outside the recess, inside the motor holes and counterbores), where a
         groove with FACE_LAND_MM lands fits; a face without one is sealed with liquid gasket."""
         row, m = self.row, self.motor
-        motor_holes = m.bolt_circle_mm - max(self.motor_hole, 1.05 * self.d_motor)
-        limits = {"gear-head face": (row["pilot_H7_mm"],
-                                     row["bolt_circle_mm"] - self.flange_hole),
+        # the groove keeps the hole ligament of HOUSING_RULES §4 (≥ 0.5·d and ≥ 2 mm)
+        to_motor = max(FACE_LAND_MM, 0.5 * self.d_motor, 2.0)
+        to_flange = max(FACE_LAND_MM, 0.5 * self.d_flange, 2.0)
+        motor_holes = m.bolt_circle_mm - max(self.motor_hole, 1.05 * self.d_motor) - 2 * to_motor
+        flange_holes = row["bolt_circle_mm"] - self.flange_hole - 2 * to_flange
+        counterbores = row["bolt_circle_mm"] - self.cbore - 2 * to_flange
+        limits = {"gear-head face": (row["pilot_H7_mm"], flange_holes),
                   "motor face": (m.pilot_diameter_mm,
                                  motor_holes if self.cbore_from_recess else
-                                 min(motor_holes, row["bolt_circle_mm"] - self.cbore))}
+                                 min(motor_holes, counterbores))}
         out = {}
         for face, (inner, outer) in limits.items():
             d_in = inner + 2 * FACE_LAND_MM
-            if d_in + 2 * self.gland.face_width + 2 * FACE_LAND_MM <= outer:
+            if d_in + 2 * self.gland.face_width <= outer:
                 out[face] = d_in
         return out
 
