@@ -40,8 +40,8 @@ import cadquery as cq
 
 from ..catalog import Catalog
 from ..design_options import DesignOptions
-from .housing_common import (BEARING_TABLE, CBORE_SINK_MM, MIN_FLOOR_MM, SEAL_TABLE,
-                             bearing_dimensions, check_ring, seal_dimensions)
+from .housing_common import (BEARING_TABLE, CBORE_SINK_MM, EDGE_FACTOR, MIN_FLOOR_MM,
+                             SEAL_TABLE, bearing_dimensions, check_ring, seal_dimensions)
 from .component_review import (cover_fits, cover_neighbours, flange_fits, flange_neighbours,
                                housing_fits, housing_neighbours)
 from .component_support import Retention
@@ -77,7 +77,6 @@ FLANGE_STEP_MM = 3.0        # journal at least 3 mm radially inside the FS-boss 
 AXIAL_GAP_MM = 1.0          # running gap: flange ↔ end wall, WG hub ↔ cover
 DEFAULT_FLANGE_RADIUS_MM = 1.0  # p.024 guideline 6 asks for a radius; its size is in the
 #                                 catalog's recommended dimensions (overlay column), else this
-EDGE_FACTOR = 1.5           # hole centre ≥ 1.5·d from the mounting flange's edge (HOUSING_RULES §4)
 RIM_MM = 3.0                # wall of the mounting spigot around the seal bore
 MOUNT_SPIGOT_MM = 3.0       # centring spigot into the machine frame
 MOUNT_START_DEG = 15.0      # mounting holes clocked off the CS screws

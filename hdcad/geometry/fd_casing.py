@@ -17,11 +17,11 @@ from __future__ import annotations
 from ..catalog import Catalog
 from ..checks.bolts import MIN_ENGAGEMENT
 from ..design_options import DesignOptions
-from .fd_layout import EDGE_FACTOR, SPIGOT_DEPTH_MM, WALL_MIN_MM, FDLayout
+from .fd_layout import SPIGOT_DEPTH_MM, WALL_MIN_MM, FDLayout
 from .fd_notes import casing_notes
 from .features import (TurnedRelief, annulus, countersink, lead_in, screw_and_grip,
                        shaft_lead_in)
-from .housing_common import (CBORE_SINK_MM, EDGE_MARGIN_MM, check_ring,
+from .housing_common import (CBORE_SINK_MM, EDGE_FACTOR, EDGE_MARGIN_MM, check_ring,
                              slack, table_value)
 from .iso286 import iso286_fit
 from .part import BoltCircle, GeometricTolerance, Neighbour, Part

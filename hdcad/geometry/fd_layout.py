@@ -28,6 +28,7 @@ import math
 from ..catalog import Catalog
 from ..design_options import DesignOptions
 from .features import Bearing, LipSeal, OringGland, PlugPort, RetainingRing
+from .housing_common import EDGE_FACTOR
 
 WALL_MIN_MM = 3.0           # machined steel wall (HOUSING_RULES §4)
 SPIGOT_CLEARANCE_MM = 0.5   # radial: the D half's spigot over the S spline (they turn)
@@ -43,7 +44,6 @@ SEAL_SET_BACK_MM = 2.0      # lip seal pressed this far below the recess floor: 
 #                             and still ends below the floor the user's gear centres on
 GAP_ORING_MAX_MM = 5.33     # largest O-ring cross-section considered for the running gap
 PORT_THREAD = "M10×1"
-EDGE_FACTOR = 1.5           # hole centre ≥ 1.5·d from the outer edge (HOUSING_RULES §4)
 RECESS_LEAD_IN_WIDENING_MM = 0.5  # the gear recess's lead-in chamfer widens it by this (radius)
 
 

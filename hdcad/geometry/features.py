@@ -55,10 +55,6 @@ class TurnedRelief:
     z1: float
     corner_r: float = 1.0   # floor corners: the turning tool's nose radius
 
-    @property
-    def volume_mm3(self) -> float:
-        return math.pi / 4 * (self.outer_d ** 2 - self.floor_d ** 2) * (self.z1 - self.z0)
-
     def cutter(self) -> cq.Solid:
         ring = annulus(self.floor_d, self.outer_d + 2, self.z0, self.z1)
         edges = cq.Workplane().add(ring).edges(

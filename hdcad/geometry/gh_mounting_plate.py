@@ -29,6 +29,7 @@ import cadquery as cq
 
 from ..catalog import Catalog
 from .gh_interface import GearHeadFace
+from .housing_common import EDGE_FACTOR
 from .iso286 import iso286_fit
 from .part import BoltCircle, GeometricTolerance, Part
 from .primitives import break_outer_edges, cylinder, ring_points, single_solid
@@ -36,7 +37,6 @@ from .standards import ISO_4762_HEAD_MM, thread_diameter
 
 TABLE = "gh_mounting_interface"
 FLOOR_MM = 3.0              # least material under a counterbore or the recess
-EDGE_FACTOR = 1.5           # hole centre ≥ 1.5·d from the outline (HOUSING_RULES §4)
 HEAD_CLEARANCE_MM = 1.0     # corner screw heads clear of the gear head's outline
 WALL_MM = 3.0               # bore inside a spigot: a 3 mm steel wall (HOUSING_RULES §4)
 MATERIAL = "S235JR (EN 10025-2)"
@@ -74,10 +74,8 @@ class GHMountingPlate:
         """(□ side, corner-hole offset a): the corner heads clear the outline circle, the
         holes keep 1.5·d to the edges."""
         a = (self.outline / 2 + HEAD_CLEARANCE_MM + self.head / 2) / math.sqrt(2)
-        side = 2 * (a + EDGE_FACTOR * self.d)
-        inner = self.row["bolt_circle_mm"] + 2 * EDGE_FACTOR * self.d
-        if side < inner:
-            side, a = inner, inner / 2 - EDGE_FACTOR * self.d
+        side = max(2 * (a + EDGE_FACTOR * self.d),
+                   self.row["bolt_circle_mm"] + 2 * EDGE_FACTOR * self.d)
         return math.ceil(side), math.ceil(side) / 2 - EDGE_FACTOR * self.d
 
     def build(self) -> Part:

@@ -24,6 +24,7 @@ SHAFT_CLEARANCE_MM = 1.0   # radial clearance of the shaft hole: the WG shaft tu
 SEAL_DEPTH_ALLOWANCE_MM = 0.3  # seal bore deeper than b so the seal seats on the shoulder
 CBORE_SINK_MM = 0.5        # screw head sits this far below the outer face (gear sits on it)
 MIN_FLOOR_MM = 3.0         # least material below a blind tapped hole
+EDGE_FACTOR = 1.5          # hole centre ≥ 1.5·d from the outer edge (HOUSING_RULES §4)
 
 
 def table_value(table: dict, key, what: str):

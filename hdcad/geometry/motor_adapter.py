@@ -23,7 +23,8 @@ from dataclasses import dataclass
 from ..catalog import Catalog
 from ..checks.bolts import MIN_ENGAGEMENT
 from ..design_options import DesignOptions
-from .features import OringGland, countersink, screw_body, screw_for_grip
+from .features import COUNTERSINK_FACTOR, OringGland, countersink, screw_body, screw_for_grip
+from .housing_common import EDGE_FACTOR
 from .iso286 import iso286_fit
 from .part import BoltCircle, Neighbour, Part
 from .primitives import break_outer_edges, cylinder, ring_points, single_solid
@@ -35,7 +36,6 @@ FLANGE_START_DEG = 45.0
 SPIGOT_MM = 3.0             # spigot length into pilot A, at most B − 0.5
 SHAFT_CLEARANCE_MM = 1.0    # radial, around the motor shaft in the plate
 FLOOR_MM = 3.0              # least material under a blind hole or a counterbore
-EDGE_FACTOR = 1.5           # hole centre ≥ 1.5·d from the outline (HOUSING_RULES §4)
 LIGAMENT_MM = 2.0           # least ligament between holes (HOUSING_RULES §4)
 DIRECT_TOL_MM = 0.05        # a pilot or bolt circle this close counts as the same
 COLOR = (0.55, 0.62, 0.74)
@@ -140,9 +140,10 @@ class MotorAdapter:
         groove with FACE_LAND_MM lands fits; a face without one is sealed with liquid gasket."""
         row, m = self.row, self.motor
         # the groove keeps the hole ligament of HOUSING_RULES §4 (≥ 0.5·d and ≥ 2 mm)
-        to_motor = max(FACE_LAND_MM, 0.5 * self.d_motor, 2.0)
-        to_flange = max(FACE_LAND_MM, 0.5 * self.d_flange, 2.0)
-        motor_holes = m.bolt_circle_mm - max(self.motor_hole, 1.05 * self.d_motor) - 2 * to_motor
+        to_motor = max(FACE_LAND_MM, 0.5 * self.d_motor, LIGAMENT_MM)
+        to_flange = max(FACE_LAND_MM, 0.5 * self.d_flange, LIGAMENT_MM)
+        entry = max(self.motor_hole, COUNTERSINK_FACTOR * self.d_motor)
+        motor_holes = m.bolt_circle_mm - entry - 2 * to_motor
         flange_holes = row["bolt_circle_mm"] - self.flange_hole - 2 * to_flange
         counterbores = row["bolt_circle_mm"] - self.cbore - 2 * to_flange
         limits = {"gear-head face": (row["pilot_H7_mm"], flange_holes),
@@ -156,16 +157,18 @@ class MotorAdapter:
                 out[face] = d_in
         return out
 
+    def _face_plane(self, face: str) -> tuple[float, int]:
+        """(z of the face, side its material lies on) of the plate face ``face``."""
+        return (0.0, 1) if face == "gear-head face" else (self.thickness, -1)
+
     def face_cutters(self) -> list:
-        faces = {"gear-head face": (0.0, 1), "motor face": (self.thickness, -1)}
-        return [self.gland.groove_in_face(d_in, *faces[face])
+        return [self.gland.groove_in_face(d_in, *self._face_plane(face))
                 for face, d_in in self.face_glands.items()]
 
     def face_orings(self) -> list[Neighbour]:
-        faces = {"gear-head face": (0.0, 1), "motor face": (self.thickness, -1)}
         return [Neighbour("oring", f"O-ring {d_in:.0f}×{self.gland.d2:g} ({face})",
-                          {"d2": self.gland.d2}, faces[face][0],
-                          body=self.gland.ring_in_face(d_in, *faces[face]))
+                          {"d2": self.gland.d2}, self._face_plane(face)[0],
+                          body=self.gland.ring_in_face(d_in, *self._face_plane(face)))
                 for face, d_in in self.face_glands.items()]
 
     # -- holes -------------------------------------------------------------------------------

@@ -54,11 +54,14 @@ def break_outer_edges(part: cq.Workplane, outer_d: float | None = None,
                 return False
         return True
 
+    return _chamfer_where(part, on_outline, size)
+
+
+def _chamfer_where(part: cq.Workplane, wanted, size: float) -> cq.Workplane:
+    """Chamfer ``size`` × 45° on the edges for which ``wanted(edge)`` holds (none: as is)."""
     solid = part.val()
-    edges = [e for e in solid.Edges() if on_outline(e)]
-    if not edges:
-        return part
-    return cq.Workplane("XY").add(solid.chamfer(size, None, edges))
+    edges = [e for e in solid.Edges() if wanted(e)]
+    return cq.Workplane("XY").add(solid.chamfer(size, None, edges)) if edges else part
 
 
 def chamfer_circles(part: cq.Workplane, circles: list[tuple[float, float]],
@@ -72,6 +75,4 @@ def chamfer_circles(part: cq.Workplane, circles: list[tuple[float, float]],
         return any(abs(2 * r - d) < 1e-6 and abs(c.z - z) < 1e-6 and math.hypot(c.x, c.y) < 1e-6
                    for d, z in circles)
 
-    solid = part.val()
-    edges = [e for e in solid.Edges() if wanted(e)]
-    return cq.Workplane("XY").add(solid.chamfer(size, None, edges)) if edges else part
+    return _chamfer_where(part, wanted, size)

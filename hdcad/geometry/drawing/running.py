@@ -46,10 +46,18 @@ def running_rows(sheet: Sheet, dims: list[Dimension], m: Measured, scale: float
     return [[d for _, d in row] for row in rows]
 
 
+def _widest(sheet: Sheet, dims: list[Dimension]) -> float:
+    return max((sheet.text_size(d.label)[0] for d in dims if is_running(d)), default=0.0)
+
+
 def row_pitch(sheet: Sheet, dims: list[Dimension]) -> float:
     """Height of one running line with its values [mm]."""
-    widest = max((sheet.text_size(d.label)[0] for d in dims if is_running(d)), default=0.0)
-    return max(DIM_SPACING_MM, TEXT_LIFT_MM + widest + ROW_GAP_MM)
+    return max(DIM_SPACING_MM, TEXT_LIFT_MM + _widest(sheet, dims) + ROW_GAP_MM)
+
+
+def _row_y(k: int, pitch: float) -> float:
+    """Height of running line k above the side view's top [mm]."""
+    return DIM_SPACING_MM + k * pitch
 
 
 def height(sheet: Sheet, dims: list[Dimension], m: Measured, scale: float) -> float:
@@ -57,8 +65,7 @@ def height(sheet: Sheet, dims: list[Dimension], m: Measured, scale: float) -> fl
     n = len(running_rows(sheet, dims, m, scale))
     if not n:
         return 0.0
-    widest = max(sheet.text_size(d.label)[0] for d in dims if is_running(d))
-    return DIM_SPACING_MM + (n - 1) * row_pitch(sheet, dims) + TEXT_LIFT_MM + widest
+    return _row_y(n - 1, row_pitch(sheet, dims)) + TEXT_LIFT_MM + _widest(sheet, dims)
 
 
 def draw_running(sheet: Sheet, dims: list[Dimension], m: Measured, side_x0: float, cy: float,
@@ -66,22 +73,24 @@ def draw_running(sheet: Sheet, dims: list[Dimension], m: Measured, side_x0: floa
     """Draw the running lines above the side view; returns the paper y of the top of the
     last line's values (the side view's top when there are none)."""
     rows = running_rows(sheet, dims, m, scale)
+    top = cy + m.box.xmax * scale
+    if not rows:
+        return top
     pitch = row_pitch(sheet, dims)
-    y = cy + m.box.xmax * scale
     origin_x = side_x0 + (0.0 - m.box.zmin) * scale
     t = np.linspace(0, 2 * np.pi, 37)
-    for row in rows:
-        y += pitch if y > cy + m.box.xmax * scale else DIM_SPACING_MM
+    ys = [top + _row_y(k, pitch) for k in range(len(rows))]
+    y0 = cy + top_at(m, 0.0) * scale + EXT_GAP_MM  # the origin's extension line, once
+    sheet.lines([np.array([[origin_x, y0], [origin_x, ys[-1] + EXT_OVER_MM]])], "thin")
+    for row, y in zip(rows, ys):
         xs = [side_x0 + (d.z1 - m.box.zmin) * scale for d in row]
         sheet.lines([np.array([[origin_x, y], [max(xs), y]]),
                      np.column_stack([origin_x + ORIGIN_R_MM * np.cos(t),
                                       y + ORIGIN_R_MM * np.sin(t)])], "thin")
-        y0 = cy + top_at(m, 0.0) * scale + EXT_GAP_MM
-        sheet.lines([np.array([[origin_x, y0], [origin_x, y + EXT_OVER_MM]])], "thin")
         for d, x in zip(row, xs):
             y_ext = cy + top_at(m, d.z1) * scale + EXT_GAP_MM
             sheet.lines([np.array([[x, y_ext], [x, y + EXT_OVER_MM]])], "thin")
             sheet.arrow((x, y), (origin_x, y))
             sheet.text(x - TEXT_OFFSET_MM, y + TEXT_LIFT_MM, d.label, rotation=90,
                        ha="left", va="bottom")
-    return cy + m.box.xmax * scale + height(sheet, dims, m, scale)
+    return ys[-1] + TEXT_LIFT_MM + _widest(sheet, dims)
