@@ -327,6 +327,7 @@ def _merge_rows(tables: dict[str, Table], name: str, rows: list[dict], where: st
             raise InputError(row_where, f"missing key column(s) {', '.join(missing)}")
         row = {c: _parse_cell(c, raw.get(c), row_where) for c in (columns or tuple(raw))}
         _check_overlay_row(name, row, row_where)
+        _check_oring(row, tables, row_where)
         row["source"] = f"{source}" + (f" ({raw['source']})" if raw.get("source") else "")
         if keys:
             table.rows = [r for r in table.rows if any(r.get(k) != row.get(k) for k in keys)]
@@ -348,6 +349,22 @@ def _check_overlay_row(table: str, row: dict, where: str) -> None:
     if table == "main_bearing" and row.get("bearing_type") not in BEARING_TYPES:
         raise InputError(f"{where}.bearing_type", f"must be one of {', '.join(BEARING_TYPES)} "
                                                   f"(got {str(row.get('bearing_type'))[:40]!r})")
+
+
+def _check_oring(row: dict, tables: dict[str, Table], where: str) -> None:
+    """An O-ring given as "d1xd2" [mm] has a cross-section d2 of the ISO 3601 gland table."""
+    text = row.get("oring_d1_d2_mm")
+    if not text:
+        return
+    field_ = f"{where}.oring_d1_d2_mm"
+    try:
+        d1, d2 = (float(v) for v in str(text).lower().replace("×", "x").split("x"))
+    except ValueError:
+        raise InputError(field_, f"must be 'd1xd2' in mm, e.g. '104.37x2.62' (got {text!r})")
+    allowed = sorted(r["d2_mm"] for r in tables["oring_gland_iso3601"].rows)
+    if d1 <= 0 or d2 not in allowed:
+        raise InputError(field_, "d1 > 0 and d2 one of the ISO 3601 cross-sections "
+                                 f"{', '.join(f'{v:g}' for v in allowed)} (got {text!r})")
 
 
 @lru_cache(maxsize=None)

@@ -165,6 +165,9 @@ tables:
      "rated_torque_2000_Nm: 3}]}", "required"),
     ("source: x\ntables: {main_bearing: [{model: A, C_N: abc}]}", "must be a number"),
     ("source: [unclosed", "not valid YAML"),
+    ("source: x\ntables: {gh_input_interface: [{series: CSF-GH, size: 45, pilot_diameter_mm: 100, "
+     "pilot_kind: spigot, pilot_depth_mm: 5, bolt_circle_mm: 122, bolt_count: 4, "
+     "bolt_thread: M8, oring_d1_d2_mm: '104x2.5'}]}", "ISO 3601 cross-sections 1.78, 2.62"),
 ])
 def test_bad_overlays_are_rejected(tmp_path, body, words):
     with pytest.raises(InputError) as info:

@@ -44,8 +44,9 @@ def test_the_interface_gives_recess_screws_and_o_ring(tmp_path):
     holes = [c for c in cylinders if c == (4.5, 61.0)]  # 4 × Ø9 (ISO 273 medium M8) on Ø122
     assert len(holes) == 4
     assert (7.5, 61.0) in cylinders  # DIN 974-1 counterbore Ø15 for the M8 heads
-    d1, d2 = 104.37, 2.62  # face gland: inner Ø d1, width 1.4·d2
-    assert (round(d1 / 2, 3), 0.0) in cylinders and (round(d1 / 2 + 1.4 * d2, 3), 0.0) in cylinders
+    # face gland: inner Ø d1, width 3.7 for d2 2.62 (ISO 3601-2 gland table, catalog file)
+    d1, width = 104.37, 3.7
+    assert (round(d1 / 2, 3), 0.0) in cylinders and (round(d1 / 2 + width, 3), 0.0) in cylinders
     box = shape.BoundingBox()
     assert box.zlen == pytest.approx(part.dimensions["thickness_mm"], abs=1e-3)
     assert box.xlen == pytest.approx(146, abs=1e-3)  # the interface's outline

@@ -6,7 +6,7 @@ maker's delivery drawings. It comes from the overlay table ``gh_input_interface`
 series and size); without it the flange is written with a flat gear-head face and marked
 NOT FOR MANUFACTURE. The pilot fit is H7/g6 (ISO 286), the screws are ISO 4762 in ISO 273
 medium clearance holes with DIN 974-1 counterbores from the motor face, the O-ring sits in a
-face gland (ISO 3601-2 proportions: depth 0.75·d2, width 1.4·d2).
+face gland of the ISO 3601-2 gland table (:class:`.features.OringGland`).
 
 References
 ----------
@@ -19,13 +19,13 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from ..catalog import Catalog
+from .features import OringGland
 from .part import BoltCircle
 from .primitives import cylinder, ring_points
 from .standards import DIN_974_1_CBORE_MM, ISO_273_MEDIUM_MM, ISO_4762_HEAD_MM, thread_diameter
 
 TABLE = "gh_input_interface"
 CBORE_SINK_MM = 0.5          # head below the motor face (DIN 974-1: depth k + 0.5)
-GLAND_DEPTH, GLAND_WIDTH = 0.75, 1.4   # × d2, ISO 3601-2 face gland proportions
 NOT_FOR_MANUFACTURE = ("NOT FOR MANUFACTURE: the gear-head housing face (pilot, bolt circle, "
                        "screws) is not in the seeds (lost figures 053-1 … 064-1); add the "
                        "overlay table gh_input_interface for this series and size")
@@ -36,6 +36,7 @@ class GearHeadFace:
     """The gear-head housing face from ``gh_input_interface`` (one row)."""
 
     row: dict
+    catalog: Catalog
 
     @property
     def spigot(self) -> bool:
@@ -73,13 +74,11 @@ class GearHeadFace:
                                 r.get("bolt_start_angle_deg") or 0.0):
             cut.append(cylinder(self.clearance_mm, low, thickness + 1, x, y))
             cut.append(cylinder(cb_d, thickness - cb_depth, thickness + 1, x, y))
-        gland = self.oring()
+        gland = self.gland()
         if gland:
-            d1, d2 = gland
+            d1 = self.oring()[0]
             inner = d1 if self.spigot else max(d1, r["pilot_diameter_mm"])
-            ring = cylinder(inner + 2 * GLAND_WIDTH * d2, -1.0, GLAND_DEPTH * d2).cut(
-                cylinder(inner, -2.0, GLAND_DEPTH * d2 + 1))
-            cut.append(ring)
+            cut.append(gland.groove_in_face(inner, 0.0, +1))
         return add, cut
 
     def oring(self) -> tuple[float, float] | None:
@@ -88,6 +87,12 @@ class GearHeadFace:
             return None
         d1, d2 = (float(v) for v in str(text).lower().replace("×", "x").split("x"))
         return d1, d2
+
+    def gland(self) -> OringGland | None:
+        """The face gland of the overlay's O-ring cross-section (ValueError naming the
+        cross-sections of the gland table when d2 is not one of them)."""
+        ring = self.oring()
+        return None if ring is None else OringGland.from_catalog(self.catalog, ring[1])
 
     def bolt_circle(self, thickness: float, bore: float, outer: float | None,
                     square: float | None) -> BoltCircle:
@@ -109,9 +114,9 @@ class GearHeadFace:
                 f"on Ø{r['bolt_circle_mm']:g} in Ø{self.clearance_mm:g} holes, counterbored "
                 f"Ø{self.counterbore[0]:g} × {self.counterbore[1]:g} from the {far_face} "
                 f"(fit {part} to the gear head first)"]
-        gland = self.oring()
-        text.append(f"O-ring {gland[0]:g} × {gland[1]:g} in a face gland (depth "
-                    f"{GLAND_DEPTH * gland[1]:.2f}, width {GLAND_WIDTH * gland[1]:.2f}; seed 000 "
+        ring, gland = self.oring(), self.gland()
+        text.append(f"O-ring {ring[0]:g} × {ring[1]:g} in a face gland (depth "
+                    f"{gland.face_depth:g}, width {gland.face_width:g}, ISO 3601-2; seed 000 "
                     "table 028-1)" if gland else
                     f"no O-ring size in {table}: seal the face with {r.get('sealant') or 'a liquid gasket'} "
                     "(seed 000 table 028-1 asks for a seal on the input-side flange face)")
@@ -123,4 +128,4 @@ class GearHeadFace:
 
 def gear_head_face(catalog: Catalog, series: str, size: int) -> GearHeadFace | None:
     row = catalog.find(TABLE, series=series, size=size) if catalog.has(TABLE) else None
-    return None if row is None else GearHeadFace(row)
+    return None if row is None else GearHeadFace(row, catalog)

@@ -48,7 +48,7 @@ class GHMountingPlate:
 
     def __init__(self, row: dict, catalog: Catalog, label: str):
         self.row, self.catalog, self.label = row, catalog, label
-        self.face = GearHeadFace(row)
+        self.face = GearHeadFace(row, catalog)
         self.thread = row["bolt_thread"]
         self.d = thread_diameter(self.thread)
         self.clearance = self.face.clearance_mm

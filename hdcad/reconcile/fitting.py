@@ -35,6 +35,20 @@ FIGURE_KINDS = {"hysteresis_rad": ("torsion",), "backlash_rad": ("torsion",),
                 "accuracy_rad": ("transmission", "vibration")}
 # Shared nonlinear parameters: one value per model, whichever effect brings them.
 SHARED = ("damping_ratio", "stiffness_scale")
+# Legendre order of the slowly varying TE amplitude and phase while effects are named (3 and
+# 4 fit modulated TE better but a flexible TE also takes what a second effect explains);
+# once named, the order is chosen by BIC up to TE_ORDER_MAX (:func:`.search.refine_te_order`)
+TE_ORDER = 2
+TE_ORDER_MAX = 24
+
+
+def te_labels(order: int) -> tuple[str, ...]:
+    """Names of the TE amplitudes: sin, cos, then sin_uk, cos_uk for P1 … P_order."""
+    return ("sin", "cos") + tuple(f"{f}_u{k}" for k in range(1, order + 1)
+                                  for f in ("sin", "cos"))
+
+
+TE_LABELS = te_labels(TE_ORDER)
 
 
 @dataclass
@@ -51,6 +65,7 @@ class Problem:
     fit_branches: tuple[np.ndarray, int] | None = None
     outliers: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=int))
     step_position: float = 0.0
+    te_order: int = TE_ORDER  # Legendre order of the TE amplitude and phase
     cache: dict = field(default_factory=dict)
 
     @property
@@ -152,7 +167,7 @@ def _harmonic(problem: Problem, order: int, theta: dict, full: bool) -> np.ndarr
     amplitude and phase), or the joint's response to them (vibration)."""
     zeta = theta.get("damping_ratio")
     scale = theta.get("stiffness_scale", 1.0)
-    key = (order, zeta, scale, full)
+    key = (order, zeta, scale, full, problem.te_order)
     if key not in problem.cache:
         inp = problem.base.inputs
         phi = inp["wg_angle_rad"]
@@ -164,18 +179,13 @@ def _harmonic(problem: Problem, order: int, theta: dict, full: bool) -> np.ndarr
                                     for c in basis])
         else:  # amplitude and phase as Legendre series in the record position
             u = inp["record_position"]
-            cols = np.column_stack([c * p for p in _legendre(u, TE_ORDER) for c in basis])
+            cols = np.column_stack([c * p for p in _legendre(u, problem.te_order)
+                                    for c in basis])
         cols = cols if full else cols[problem.rows]
         if len(problem.cache) > 64:
             problem.cache.clear()
         problem.cache[key] = cols
     return problem.cache[key]
-
-
-TE_ORDER = 2  # Legendre order of the slowly varying TE amplitude and phase (3 and 4
-#              fit suite B's modulated TE better but lost TE pairs on suite C: kept at 2)
-TE_LABELS = ("sin", "cos") + tuple(f"{f}_u{k}" for k in range(1, TE_ORDER + 1)
-                                   for f in ("sin", "cos"))
 
 
 def _legendre(u: np.ndarray, order: int) -> list[np.ndarray]:
@@ -228,7 +238,7 @@ def columns(problem: Problem, effects: tuple[str, ...], theta: dict[str, float],
             add(name, ["compliance"], inp["torque_Nm"], 0.0)
         elif name in ("te_1x", "te_2x"):
             block = _harmonic(problem, int(name[3]), theta, full)
-            add(name, TE_LABELS[:block.shape[1]], block)
+            add(name, te_labels(problem.te_order)[:block.shape[1]], block)
         elif name == "low_load_efficiency":
             f = fx.low_load_factor(inp["alpha"], th["c"], th["q"], inp["input_speed_rpm"],
                                    th["s"])

@@ -149,6 +149,7 @@ def reconcile(kind: str, data: dict, model: GearModel, catalog: Catalog,
     with_rig, rig_table, singles = search.select_rig(problem, start)
     best, candidates = search.select_gear(problem, with_rig, singles)
     final = search.recheck_rig(problem, best.fit if best else with_rig)
+    final = search.refine_te_order(problem, final)
     named = best.effects if best else ()
     resid0 = (base.y - start.prediction)
     residual = base.y - final.prediction
