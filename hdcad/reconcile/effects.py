@@ -299,17 +299,24 @@ def low_load_factor(alpha: np.ndarray, c: float, q: float, speed_rpm: np.ndarray
 
 
 def temperature_factor(temperature_C: np.ndarray, share: float, slope_per_K: float,
-                       reference_C: float) -> np.ndarray:
+                       reference_C: float, speed_rpm: np.ndarray | None = None,
+                       s: float = 0.0) -> np.ndarray:
     """Efficiency relative to that at ``reference_C`` [-] when part of the loss is viscous.
 
-    F = 1 / (1 + a·(e^(−b·(t − t_ref)) − 1)): the lubricant's viscosity falls exponentially
-    with temperature (Reynolds' viscosity law) and the churning loss with it, so a warmer
-    gear is more efficient for a > 0; a is the viscous loss as a share of the input power at
-    t_ref, b the viscosity's temperature coefficient (seed 000 p.023 lists temperature among
-    the factors of efficiency).
+    F = 1 / (1 + a·(e^(−b·(t − t_ref)) − 1)·(n/n_ref)^s): the lubricant's viscosity falls
+    exponentially with temperature (Reynolds' viscosity law) and the churning loss with it,
+    so a warmer gear is more efficient for a > 0; a is the viscous loss as a share of the
+    input power at t_ref and ``KE_REFERENCE_SPEED_RPM``, b the viscosity's temperature
+    coefficient, s how the viscous share grows with input speed (viscous drag goes with
+    viscosity × speed, Petroff/Hersey: the temperature matters more the faster the gear
+    runs; s = 0 a speed-free law). Seed 000 p.023 lists temperature and input speed among
+    the factors of efficiency.
     """
     t = np.asarray(temperature_C, dtype=float)
-    return 1.0 / (1.0 + share * np.expm1(-slope_per_K * (t - reference_C)))
+    change = np.expm1(-slope_per_K * (t - reference_C))
+    if speed_rpm is not None and s != 0.0:
+        change = change * (np.asarray(speed_rpm, dtype=float) / KE_REFERENCE_SPEED_RPM) ** s
+    return 1.0 / (1.0 + share * change)
 
 
 # --------------------------------------------------------------------------- library
@@ -405,11 +412,14 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
         description=("Efficiency changes with the lubricant temperature through the "
                      "viscosity of the grease or oil (seed 000 p.023 lists temperature among "
                      "the factors; its example is at 20 °C lubricant temperature)."),
-        form="η = η0·Ke(α)/(1 + a·(exp(−b·(t − 20 °C)) − 1))",
+        form="η = η0·Ke(α)/(1 + a·(exp(−b·(t − 20 °C)) − 1)·(n/1000 r/min)^s)",
         parameters=(
-            Parameter("a", "-", "viscous loss / input power at 20 °C (negative: efficiency "
-                      "falls as the gear warms)", -0.5, 0.9),
+            Parameter("a", "-", "viscous loss / input power at 20 °C and 1000 r/min "
+                      "(negative: efficiency falls as the gear warms)", -0.5, 0.9),
             Parameter("b", "1/K", "temperature coefficient of the viscosity", 0.002, 0.2),
+            Parameter("s", "-", "speed exponent of the viscous share (0: the same at every "
+                      "speed; viscous drag goes with viscosity × speed)", 0.0, 1.5,
+                      start=0.0),
         ),
         kinds=("efficiency",)),
 )}

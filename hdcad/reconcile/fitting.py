@@ -245,7 +245,8 @@ def columns(problem: Problem, effects: tuple[str, ...], theta: dict[str, float],
             factor = f if factor is None else factor * f
         elif name == "temperature_dependence":
             f = fx.temperature_factor(inp["temperature_C"], th["a"], th["b"],
-                                      fx.REFERENCE_TEMPERATURE_C)
+                                      fx.REFERENCE_TEMPERATURE_C, inp["input_speed_rpm"],
+                                      th["s"])
             factor = f if factor is None else factor * f
     X = np.column_stack(cols)
     if factor is not None:  # η = η0·Ke(α)·F(t): the effects scale the whole efficiency
@@ -328,7 +329,11 @@ def fit_model(problem: Problem, effects: tuple[str, ...],
                         params, scale)
         if rss_of(again) < rss_of(theta):
             theta = again
-    return finish(problem, effects, theta, len(keys))
+    # a shape held at a lower bound of 0 (a speed exponent of 0) is the simpler model's
+    # value, not a parameter in use
+    in_use = [k for k in keys if not (params[k].lower == 0.0 and theta[k] <= 1e-6 * scale[k]
+                                      * params[k].upper)]
+    return finish(problem, effects, theta, len(in_use))
 
 
 def finish(problem: Problem, effects: tuple[str, ...], theta: dict[str, float],

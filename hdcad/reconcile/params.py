@@ -70,7 +70,7 @@ def effect_params(problem: Problem, fit: Fit, effect: str) -> dict[str, dict]:
                "Ke_at_alpha_0.58_1000rpm": (
                    float(fx.low_load_factor(np.array(0.58), th["c"], th["q"])), "-")}
     elif effect == "temperature_dependence":
-        out = {"a": (th["a"], "-"), "b": (th["b"], "1/K"),
+        out = {"a": (th["a"], "-"), "b": (th["b"], "1/K"), "s": (th["s"], "-"),
                "t_ref": (fx.REFERENCE_TEMPERATURE_C, "°C")}
     return {k: {"value": float(v), "unit": u} for k, (v, u) in out.items()}
 
