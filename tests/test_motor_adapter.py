@@ -67,7 +67,8 @@ def test_plate_measured_from_step(plate):
     feats = {round(c.diameter, 3): c for c in axial_features(z_cylinders(shape))}
     spigot, recess = feats[80.0], feats[73.0]
     assert spigot.z1 == pytest.approx(0.0, abs=TOL)                      # spigot into A
-    assert recess.z1 - recess.z0 == pytest.approx(1.6 + 0.5, abs=TOL)   # motor pilot + 0.5
+    # motor pilot + 0.5, of which the mouth's 20° lead-in takes a third (0.7 mm)
+    assert recess.z1 - recess.z0 == pytest.approx((1.6 + 0.5) * 2 / 3, abs=TOL)
     assert 16.0 in feats                                                # shaft bore Ø14 + 2
     holes = [c for c in z_cylinders(shape) if not c.on_axis]
     flange = {(round(c.x, 2), round(c.y, 2)) for c in holes if abs(c.diameter - 6.6) < TOL}
@@ -84,18 +85,19 @@ def test_plate_measured_from_step(plate):
 
 def test_faces_carry_a_static_o_ring_groove_where_it_fits(plate):
     """Seed 000 p.028: O-ring or sealant on flange faces. ISO 3601-2 face gland for d2 1.78:
-    width 2.5, depth 1.33 (catalog oring_gland_iso3601), 1.5 mm land to the pilot and the
-    hole ligament of HOUSING_RULES §4 (≥ 0.5·d, ≥ 2 mm) outside. Motor face: recess Ø73 +
-    3 = Ø76 to Ø81, the M6 counterbores Ø11 on Ø100 leave to 100 − 11 − 6 = Ø83: a groove.
-    Gear-head face: spigot Ø80 + 3 = Ø83 to Ø88, but the M6 holes Ø6.6 on Ø100 leave only to
+    width 2.5, depth 1.33 (catalog oring_gland_iso3601), the 2 mm ligament of HOUSING_RULES
+    §4 to the pilot and the hole ligament (≥ 0.5·d, ≥ 2 mm) outside. Motor face: recess Ø73
+    widened by its 0.7 mm 20° lead-in to Ø73.51, + 4 = Ø77.6 (rounded up to 0.1) to Ø82.6;
+    the M6 counterbores Ø11 on Ø100 leave to 100 − 11 − 6 = Ø83: a groove. Gear-head face:
+    spigot Ø80 + 4 = Ø84 to Ø89, but the M6 holes Ø6.6 on Ø100 leave only to
     100 − 6.6 − 6 = Ø87.4: no groove, liquid gasket in the notes."""
     part, shape = plate
     t = part.dimensions["thickness_mm"]
     faces = {}
     for c in axial_features(z_cylinders(shape)):
         faces.setdefault(round(c.diameter, 3), []).append((round(c.z0, 3), round(c.z1, 3)))
-    assert (round(t - 1.33, 3), t) in faces[76.0] and (round(t - 1.33, 3), t) in faces[81.0]
-    assert 88.0 not in faces
+    assert (round(t - 1.33, 3), t) in faces[77.6] and (round(t - 1.33, 3), t) in faces[82.6]
+    assert 89.0 not in faces
     assert any(n.startswith("gear-head face: no room") for n in part.notes)
     orings = [n for n in part.neighbours if n.kind == "oring"]
     assert len(orings) == 1

@@ -41,12 +41,12 @@ import cadquery as cq
 from ..catalog import Catalog
 from ..design_options import DesignOptions
 from .housing_common import (BEARING_TABLE, CBORE_SINK_MM, EDGE_FACTOR, MIN_FLOOR_MM,
+                             PILOT_LEAD_IN_MM, TAP_RUNOUT_PITCHES,
                              SEAL_TABLE, bearing_dimensions, check_ring, seal_dimensions)
 from .component_review import (cover_fits, cover_neighbours, flange_fits, flange_neighbours,
                                housing_fits, housing_neighbours)
 from .component_support import Retention
-from .features import countersink, screw_and_grip
-from .flanges import TAP_RUNOUT_PITCHES
+from .features import countersink, lead_in, screw_and_grip, shaft_lead_in
 from .part import BoltCircle, Part
 from .primitives import cylinder, ring_points, single_solid
 from .standards import (DIN_974_1_CBORE_MM, ISO_261_PITCH_MM, ISO_273_MEDIUM_MM,
@@ -308,6 +308,8 @@ class ComponentSetHousing:
             cylinder(self.mount_od, z1 - self.mount_t, z1),
             cylinder(self.mount_spigot, z1 - 0.01, z1 + MOUNT_SPIGOT_MM))
         cutters = [cylinder(o["cs_outer_diameter_mm"], z0 - 1, 0),
+                   lead_in(o["cs_outer_diameter_mm"], z0, PILOT_LEAD_IN_MM, inward=True),
+                   shaft_lead_in(self.mount_spigot, z1 + MOUNT_SPIGOT_MM, PILOT_LEAD_IN_MM),
                    cylinder(self.cavity_d, -1, self.z_wall),
                    cylinder(self.out_D, self.z_wall - 1, self.z_shoulder),
                    out.ring_bore.groove(self.zb - out.ring_bore.m)]
@@ -331,6 +333,7 @@ class ComponentSetHousing:
         body = cylinder(o["cs_outer_diameter_mm"], 0, SPIGOT_MM).fuse(
             cylinder(self.housing_od, SPIGOT_MM, t))
         cutters = [cylinder(self.cover_cavity_d, -1, depth),
+                   shaft_lead_in(o["cs_outer_diameter_mm"], 0.0, PILOT_LEAD_IN_MM, towards=-1),
                    cylinder(self.in_D, depth - 1, self.in_shoulder),
                    inp.ring_bore.groove(self.zb_in - inp.ring_bore.m)]
         cutters += inp.seal_bore(self.in_shoulder, t)

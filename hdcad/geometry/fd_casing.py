@@ -21,12 +21,12 @@ from .fd_layout import SPIGOT_DEPTH_MM, WALL_MIN_MM, FDLayout
 from .fd_notes import casing_notes
 from .features import (TurnedRelief, annulus, countersink, lead_in, screw_and_grip,
                        shaft_lead_in)
-from .housing_common import (CBORE_SINK_MM, EDGE_FACTOR, EDGE_MARGIN_MM, check_ring,
-                             slack, table_value)
+from .housing_common import (CBORE_SINK_MM, EDGE_FACTOR, EDGE_MARGIN_MM, TAP_RUNOUT_PITCHES,
+                             check_ring, slack, table_value)
 from .iso286 import iso286_fit
 from .part import BoltCircle, GeometricTolerance, Neighbour, Part
 from .primitives import break_outer_edges, cylinder, ring_points, single_solid
-from .standards import (DIN_974_1_CBORE_MM, ISO_273_MEDIUM_MM,
+from .standards import (DIN_974_1_CBORE_MM, ISO_261_PITCH_MM, ISO_273_MEDIUM_MM,
                         ISO_4762_HEAD_MM, TAP_DRILL_MM, thread_diameter)
 
 RELIEF_MIN_MM = 5.0          # a lightening groove shorter than this saves too little to turn
@@ -98,11 +98,17 @@ class FDCasingHalf:
         if worst < EDGE_MARGIN_MM:
             raise ValueError(f"{label}: the gear_mount holes on Ø{fd0['K_mm']:g} cut the "
                              f"spline-screw counterbores on Ø{fd2['I_mm']:g}")
-        hole_bottom = lay.thickness - fd0["M_depth_mm"] - self.tap_drill / 2
+        hole_bottom = lay.thickness - self.gear_drill_depth - self.tap_drill / 2
         port_top = lay.port_z + lay.port.tap_drill / 2
         if hole_bottom - port_top < lay.port.ligament_min:
             raise ValueError(f"{label}: the gear_mount holes reach within "
                              f"{hole_bottom - port_top:.1f} mm of the oil ports")
+
+    @property
+    def gear_drill_depth(self) -> float:
+        """Drilled depth of the gear_mount holes [mm]: the catalog's thread depth M plus the
+        tap's run-out (HOUSING_RULES §4: blind tapped depth = engagement + 3·P)."""
+        return self.fd0["M_depth_mm"] + TAP_RUNOUT_PITCHES * ISO_261_PITCH_MM[self.gear_thread]
 
     def _gear_start_deg(self) -> float:
         return 180.0 / self.fd0["L_count"]  # half a pitch off the spline screws
@@ -132,7 +138,7 @@ class FDCasingHalf:
         z0 = max(lay.front_length + WALL_MIN_MM,
                  lay.port_z + lay.port.spot_face / 2 + lay.port.ligament_min)
         z1 = min(lay.thickness - self.cbore_depth,
-                 lay.thickness - fd0["M_depth_mm"] - self.tap_drill) - WALL_MIN_MM
+                 lay.thickness - self.gear_drill_depth - self.tap_drill) - WALL_MIN_MM
         if z1 - z0 < RELIEF_MIN_MM or lay.body_d - floor_d < 2 * RELIEF_MIN_DEPTH_MM:
             return None
         return TurnedRelief(lay.body_d, floor_d, z0, z1)
@@ -192,7 +198,7 @@ class FDCasingHalf:
             cuts += [cylinder(self.clearance, p - 1, t + 1, x, y),
                      cylinder(self.cbore, t - self.cbore_depth, t + 1, x, y)]
         for x, y, _ in self._gear_holes():
-            cuts += [cylinder(self.tap_drill, t - fd0["M_depth_mm"], t + 1, x, y),
+            cuts += [cylinder(self.tap_drill, t - self.gear_drill_depth, t + 1, x, y),
                      countersink(thread_diameter(self.gear_thread), t, x, y)]
         return cuts
 

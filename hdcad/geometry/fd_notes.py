@@ -30,8 +30,8 @@ def _source_notes(half) -> list[str]:
         f"{half.cbore_depth:.2f} from the outer face so that an existing length fits (grip "
         f"{half.grip:.2f} mm, head ≥ {CBORE_SINK_MM:g} mm below the gear face); sealing "
         "thread-locker on the screws (seed 000 p.028)",
-        f"gear_mount {half.gear_thread}×{fd0['M_depth_mm']:g}, modelled as tap-drill "
-        f"Ø{half.tap_drill:g}, at {half._gear_start_deg():g}° + k·pitch (half a pitch off the "
+        f"gear_mount {half.gear_thread}×{fd0['M_depth_mm']:g} (thread depth of table 311-1), "
+        f"drilled Ø{half.tap_drill:g} × {half.gear_drill_depth:g} (thread + 3·P run-out), at {half._gear_start_deg():g}° + k·pitch (half a pitch off the "
         "spline screws)",
         f"gear/pulley spigot recess Ø{lay.gear_recess_d:g} H7 × {SPIGOT_DEPTH_MM:g} mm: depth "
         "a design value (no standard depth)",

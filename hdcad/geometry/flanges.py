@@ -19,8 +19,9 @@ import cadquery as cq
 from ..catalog import Catalog
 from ..design_options import DesignOptions
 from .drive_feature import drive_feature
-from .features import countersink
+from .features import countersink, lead_in, shaft_lead_in
 from .gh_interface import NOT_FOR_MANUFACTURE, gear_head_face
+from .housing_common import PILOT_LEAD_IN_MM, TAP_RUNOUT_PITCHES
 from .iso286 import iso286_fit
 from .part import BoltCircle, Part
 from .primitives import EDGE_BREAK_MM, break_outer_edges, cylinder, ring_points, single_solid
@@ -36,7 +37,6 @@ PILOT_BOSS_HEIGHT_MM = 1.5   # FD boss into the φB recess; below the smallest F
 CBORE_SINK_MM = 0.5          # screw head sits this far below the face
 MIN_UNDER_HEAD_MM = 3.0      # least plate under a counterbore (also >= d/2)
 MIN_FLOOR_MM = 3.0           # least material below a blind tapped hole or the pilot recess
-TAP_RUNOUT_PITCHES = 3.0     # blind tap drill deeper than the usable thread by 3·P (tap lead chamfer)
 DEFAULT_PILOT_DEPTH_MM = 10.0  # largest pilot depth printed in 055-1/056-1/064-1: clears any listed motor spigot
 MOTOR_HOLE_COUNT = 4         # not in the seed tables; IEC 60072-1 FF/FT flanges up to FF265 have 4 holes
 MOTOR_HOLE_START_DEG = 45.0  # holes on the diagonals, where a square flange has room
@@ -133,7 +133,11 @@ class FDDriveFlange:
         t, top = self.thickness, self.thickness + self.hub_length
         body = cylinder(self.outer, 0, t).fuse(
             cylinder(self.pilot, -PILOT_BOSS_HEIGHT_MM, 0), cylinder(self.pilot, t, top))
-        cutters = [cylinder(self.bore, -PILOT_BOSS_HEIGHT_MM - 1, top + 1)]
+        cutters = [cylinder(self.bore, -PILOT_BOSS_HEIGHT_MM - 1, top + 1),
+                   # lead-ins: the boss into the unit's φB recess, the user's gear onto the hub
+                   shaft_lead_in(self.pilot, -PILOT_BOSS_HEIGHT_MM, PILOT_BOSS_HEIGHT_MM / 3,
+                                 towards=-1),
+                   shaft_lead_in(self.pilot, top, min(PILOT_LEAD_IN_MM, self.hub_length / 3))]
         for x, y in ring_points(self.ring, self.count, 0.0):
             cutters += [cylinder(self.hole, -1, t + 1, x, y),
                         cylinder(self.cbore, t - self.cbore_depth, t + 1, x, y)]
@@ -310,7 +314,8 @@ class GHMotorFlange:
         else:
             body = cylinder(self.outer, 0, t)
         cutters = [cylinder(self.bore, -1, t + 1),
-                   cylinder(self.pilot, t - self.pilot_depth, t + 1)]
+                   cylinder(self.pilot, t - self.pilot_depth, t + 1),
+                   lead_in(self.pilot, t, PILOT_LEAD_IN_MM, inward=False)]
         for x, y in ring_points(self.ring, MOTOR_HOLE_COUNT, MOTOR_HOLE_START_DEG):
             cutters += [cylinder(self.tap_drill, t - self.drill_depth, t + 1, x, y),
                         countersink(thread_diameter(self.thread), t, x, y)]

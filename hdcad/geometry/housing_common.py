@@ -25,6 +25,8 @@ SEAL_DEPTH_ALLOWANCE_MM = 0.3  # seal bore deeper than b so the seal seats on th
 CBORE_SINK_MM = 0.5        # screw head sits this far below the outer face (gear sits on it)
 MIN_FLOOR_MM = 3.0         # least material below a blind tapped hole
 EDGE_FACTOR = 1.5          # hole centre ≥ 1.5·d from the outer edge (HOUSING_RULES §4)
+TAP_RUNOUT_PITCHES = 3.0   # blind tap drill deeper than the usable thread by 3·P (HOUSING_RULES §4)
+PILOT_LEAD_IN_MM = 1.0     # axial length of the 20° lead-in on pilots and spigots (HOUSING_RULES §4)
 
 
 def table_value(table: dict, key, what: str):

@@ -23,8 +23,9 @@ from dataclasses import dataclass
 from ..catalog import Catalog
 from ..checks.bolts import MIN_ENGAGEMENT
 from ..design_options import DesignOptions
-from .features import COUNTERSINK_FACTOR, OringGland, countersink, screw_body, screw_for_grip
-from .housing_common import EDGE_FACTOR
+from .features import (COUNTERSINK_FACTOR, LEAD_IN_DEG, OringGland, countersink, lead_in, screw_body,
+                       screw_for_grip, shaft_lead_in)
+from .housing_common import EDGE_FACTOR, PILOT_LEAD_IN_MM
 from .iso286 import iso286_fit
 from .part import BoltCircle, Neighbour, Part
 from .primitives import break_outer_edges, cylinder, ring_points, single_solid
@@ -40,7 +41,8 @@ LIGAMENT_MM = 2.0           # least ligament between holes (HOUSING_RULES §4)
 DIRECT_TOL_MM = 0.05        # a pilot or bolt circle this close counts as the same
 COLOR = (0.55, 0.62, 0.74)
 FACE_ORING_D2_MM = 1.78     # static face O-rings: the thinnest ISO 3601-1 section fits the rings
-FACE_LAND_MM = 1.5          # land between a face groove and the pilot (groove flank, ISO 3601-2)
+FACE_LAND_MM = 1.5          # least land between a face groove and a hole (groove flank, ISO 3601-2)
+PILOT_LAND_MM = LIGAMENT_MM  # land between a face groove and the pilot or its lead-in
 
 
 @dataclass(frozen=True)
@@ -123,6 +125,7 @@ class MotorAdapter:
             thread_diameter(motor.bolt_thread)
         self.spigot = min(SPIGOT_MM, (row.get("pilot_depth_mm") or SPIGOT_MM + 0.5) - 0.5)
         self.recess = motor.pilot_length_mm + 0.5
+        self.recess_lead = min(PILOT_LEAD_IN_MM, self.recess / 3)  # 20° lead-in at its mouth
         self.bore = motor.shaft_diameter_mm + 2 * SHAFT_CLEARANCE_MM
         self._motor_holes()
         self._flange_screws()
@@ -146,13 +149,14 @@ class MotorAdapter:
         motor_holes = m.bolt_circle_mm - entry - 2 * to_motor
         flange_holes = row["bolt_circle_mm"] - self.flange_hole - 2 * to_flange
         counterbores = row["bolt_circle_mm"] - self.cbore - 2 * to_flange
+        mouth = m.pilot_diameter_mm + 2 * self.recess_lead * math.tan(math.radians(LEAD_IN_DEG))
         limits = {"gear-head face": (row["pilot_H7_mm"], flange_holes),
-                  "motor face": (m.pilot_diameter_mm,
+                  "motor face": (mouth,
                                  motor_holes if self.cbore_from_recess else
                                  min(motor_holes, counterbores))}
         out = {}
         for face, (inner, outer) in limits.items():
-            d_in = inner + 2 * FACE_LAND_MM
+            d_in = math.ceil((inner + 2 * PILOT_LAND_MM) * 10) / 10
             if d_in + 2 * self.gland.face_width <= outer:
                 out[face] = d_in
         return out
@@ -271,7 +275,9 @@ class MotorAdapter:
             body = cylinder(size, 0, t)
         body = body.fuse(cylinder(self.row["pilot_H7_mm"], -self.spigot, 0.01))
         cuts = [cylinder(self.bore, -self.spigot - 1, t + 1),
-                cylinder(self.motor.pilot_diameter_mm, t - self.recess, t + 1)]
+                cylinder(self.motor.pilot_diameter_mm, t - self.recess, t + 1),
+                shaft_lead_in(self.row["pilot_H7_mm"], -self.spigot, self.spigot / 3, towards=-1),
+                lead_in(self.motor.pilot_diameter_mm, t, self.recess_lead, inward=False)]
         for x, y in ring_points(self.row["bolt_circle_mm"], FLANGE_HOLES, FLANGE_START_DEG):
             cuts += [cylinder(self.flange_hole, -1, t + 1, x, y),
                      cylinder(self.cbore, t - self.cbore_depth, t + 1, x, y)]
