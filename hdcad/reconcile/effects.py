@@ -300,7 +300,7 @@ def low_load_factor(alpha: np.ndarray, c: float, q: float, speed_rpm: np.ndarray
 
 def temperature_factor(temperature_C: np.ndarray, share: float, slope_per_K: float,
                        reference_C: float, speed_rpm: np.ndarray | None = None,
-                       s: float = 0.0) -> np.ndarray:
+                       s: float = 0.0, boundary: float = 0.0) -> np.ndarray:
     """Efficiency relative to that at ``reference_C`` [-] when part of the loss is viscous.
 
     F = 1 / (1 + a·(e^(−b·(t − t_ref)) − 1)·(n/n_ref)^s): the lubricant's viscosity falls
@@ -313,10 +313,14 @@ def temperature_factor(temperature_C: np.ndarray, share: float, slope_per_K: flo
     the factors of efficiency.
     """
     t = np.asarray(temperature_C, dtype=float)
-    change = np.expm1(-slope_per_K * (t - reference_C))
+    g = np.exp(-slope_per_K * (t - reference_C))          # viscosity / viscosity at t_ref
+    speed = 1.0
     if speed_rpm is not None and s != 0.0:
-        change = change * (np.asarray(speed_rpm, dtype=float) / KE_REFERENCE_SPEED_RPM) ** s
-    return 1.0 / (1.0 + share * change)
+        speed = (np.asarray(speed_rpm, dtype=float) / KE_REFERENCE_SPEED_RPM) ** s
+    loss = share * (g - 1.0) * speed
+    if boundary:  # a thinner film (ν·n lower) lets the asperities touch: Stribeck's rise
+        loss = loss + boundary * (1.0 / g - 1.0) / speed
+    return 1.0 / (1.0 + loss)
 
 
 # --------------------------------------------------------------------------- library
@@ -420,6 +424,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
             Parameter("s", "-", "speed exponent of the viscous share (0: the same at every "
                       "speed; viscous drag goes with viscosity × speed)", 0.0, 1.5,
                       start=0.0),
+            Parameter("boundary", "-", "boundary-friction loss share at 20 °C and 1000 r/min "
+                      "that grows as the film thins (Stribeck: efficiency peaks at a middle "
+                      "temperature; 0: a monotone law)", 0.0, 0.5, start=0.0),
         ),
         kinds=("efficiency",)),
 )}

@@ -246,7 +246,7 @@ def columns(problem: Problem, effects: tuple[str, ...], theta: dict[str, float],
         elif name == "temperature_dependence":
             f = fx.temperature_factor(inp["temperature_C"], th["a"], th["b"],
                                       fx.REFERENCE_TEMPERATURE_C, inp["input_speed_rpm"],
-                                      th["s"])
+                                      th["s"], th["boundary"])
             factor = f if factor is None else factor * f
     X = np.column_stack(cols)
     if factor is not None:  # η = η0·Ke(α)·F(t): the effects scale the whole efficiency
