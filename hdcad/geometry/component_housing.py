@@ -46,7 +46,7 @@ from .housing_common import (BEARING_TABLE, CBORE_SINK_MM, EDGE_FACTOR, MIN_FLOO
 from .component_review import (cover_fits, cover_neighbours, flange_fits, flange_neighbours,
                                housing_fits, housing_neighbours)
 from .component_support import Retention
-from .features import countersink, lead_in, screw_and_grip, shaft_lead_in
+from .features import countersink, countersink_depth, lead_in, screw_and_grip, shaft_lead_in
 from .part import BoltCircle, Part
 from .primitives import cylinder, ring_points, single_solid
 from .standards import (DIN_974_1_CBORE_MM, ISO_261_PITCH_MM, ISO_273_MEDIUM_MM,
@@ -231,13 +231,20 @@ class ComponentSetHousing:
                            SPIGOT_MM + self.cbore_depth + MIN_FLOOR_MM)
         self._sink_counterbores()
 
+    @property
+    def cs_engagement_min(self) -> float:
+        """Least engagement of the CS screws from the housing face [mm]: the material's k·d
+        below the entry countersink."""
+        return (MIN_ENGAGEMENT[self.options.material] * self.cs_d
+                + countersink_depth(self.cs_d, self.cs_tap))
+
     def _sink_counterbores(self) -> None:
         """Counterbores sunk so that an existing ISO 4762 length clamps cover and CS and
         engages the housing thread between the least engagement and its depth."""
         width, head = self.outline["cs_width_mm"], self.cbore_depth
-        m_min = MIN_ENGAGEMENT[self.options.material] * self.cs_d
         grip_max = self.cover_t - head + width
-        self.cs_length, grip = screw_and_grip(self.cs_thread, grip_max, self.cs_depth, m_min)
+        self.cs_length, grip = screw_and_grip(self.cs_thread, grip_max, self.cs_depth,
+                                              self.cs_engagement_min)
         if self.cs_length is None:
             raise ValueError(f"{self.label}: no ISO 4762 {self.cs_thread} length reaches "
                              f"through the cover and the CS ({grip_max:.1f} mm)")

@@ -5,7 +5,6 @@ component_outline), and the user's input shaft as it must be made (collar and ri
 
 from __future__ import annotations
 
-from ..checks.bolts import MIN_ENGAGEMENT
 from .component_support import pair_fits
 from .features import annulus, screw_body, screw_for_grip
 from .iso286 import iso286_fit
@@ -68,7 +67,7 @@ def _cs_screws(h) -> list[Neighbour]:
     """CS screws from the cover's outer face through cover and CS into the housing."""
     o, thread = h.outline, h.cs_thread
     grip = h.cover_t - h.cbore_depth + o["cs_width_mm"]
-    m_min = MIN_ENGAGEMENT[h.options.material] * h.cs_d
+    m_min = h.cs_engagement_min
     length, _ = screw_for_grip(thread, grip, h.cs_depth, m_min)
     if length is None:
         return []

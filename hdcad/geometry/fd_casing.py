@@ -132,7 +132,7 @@ class FDCasingHalf:
         """Lightening groove in the body between the port spot faces and the holes from the
         outer face, down to a wall over the spline-screw clearance holes; none when shorter
         than RELIEF_MIN_MM."""
-        lay, fd0 = self.lay, self.fd0
+        lay = self.lay
         d = thread_diameter(self.screw)  # a wall over the holes, their centres 1.5·d deep
         floor_d = self.fd2["I_mm"] + max(self.clearance + 2 * WALL_MIN_MM, 2 * EDGE_FACTOR * d)
         z0 = max(lay.front_length + WALL_MIN_MM,
@@ -172,7 +172,7 @@ class FDCasingHalf:
         return body
 
     def _cutters(self) -> list:
-        lay, fd0, fd2 = self.lay, self.fd0, self.fd2
+        lay, fd2 = self.lay, self.fd2
         p, t, gap = lay.pilot_depth, lay.thickness, self.options.running_gap_mm
         cuts = [cylinder(fd2["A_g7_mm"], -1, p),
                 cylinder(lay.relief_d, p - 0.1, lay.relief_end),

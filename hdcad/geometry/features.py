@@ -91,6 +91,12 @@ def countersink(d_thread: float, z_face: float, x: float = 0.0, y: float = 0.0,
                              cq.Vector(x, y, z_face - into * extra), cq.Vector(0, 0, into))
 
 
+def countersink_depth(d_thread: float, hole_d: float) -> float:
+    """Depth [mm] of the 90° entry countersink down to a hole Ø ``hole_d``: no full thread
+    there, so it does not count as engagement."""
+    return max(COUNTERSINK_FACTOR * d_thread - hole_d, 0.0) / 2
+
+
 def shaft_lead_in(d: float, z_end: float, length: float, angle_deg: float = LEAD_IN_DEG,
                   towards: int = 1) -> cq.Solid:
     """Cutter for a lead-in chamfer on the end of a shaft or spigot Ø ``d`` whose end face is
