@@ -1,10 +1,17 @@
-from pathlib import Path
+import os
 
-import pytest
-import yaml
+# One BLAS thread per process: the suite's process pools already fill the cores, and the
+# fits' matrices are small (threads oversubscribe the CPU and slow them down).
+for _var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
+    os.environ.setdefault(_var, "1")
 
-from hdcad.catalog import load_catalog
-from hdcad.resources import examples_dir
+from pathlib import Path  # noqa: E402
+
+import pytest  # noqa: E402
+import yaml  # noqa: E402
+
+from hdcad.catalog import load_catalog  # noqa: E402
+from hdcad.resources import examples_dir  # noqa: E402
 
 DATA = Path(__file__).parent / "data"
 
