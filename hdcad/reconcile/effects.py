@@ -303,14 +303,17 @@ def temperature_factor(temperature_C: np.ndarray, share: float, slope_per_K: flo
                        s: float = 0.0, boundary: float = 0.0) -> np.ndarray:
     """Efficiency relative to that at ``reference_C`` [-] when part of the loss is viscous.
 
-    F = 1 / (1 + a·(e^(−b·(t − t_ref)) − 1)·(n/n_ref)^s): the lubricant's viscosity falls
-    exponentially with temperature (Reynolds' viscosity law) and the churning loss with it,
-    so a warmer gear is more efficient for a > 0; a is the viscous loss as a share of the
-    input power at t_ref and ``KE_REFERENCE_SPEED_RPM``, b the viscosity's temperature
-    coefficient, s how the viscous share grows with input speed (viscous drag goes with
-    viscosity × speed, Petroff/Hersey: the temperature matters more the faster the gear
-    runs; s = 0 a speed-free law). Seed 000 p.023 lists temperature and input speed among
-    the factors of efficiency.
+    F = 1 / (1 + a·(g − 1)·v + c·(1/g − 1)/v), g = e^(−b·(t − t_ref)) the viscosity
+    relative to t_ref (Reynolds' viscosity law), v = (n/n_ref)^s: the churning loss falls
+    with the viscosity, so a warmer gear is more efficient for a > 0; a is the viscous loss as
+    a share of the input power at t_ref and ``KE_REFERENCE_SPEED_RPM``, b the viscosity's
+    temperature coefficient, s how the viscous share grows with input speed (viscous drag goes
+    with viscosity × speed, Petroff/Hersey; s = 0 a speed-free law); c (``boundary``) the
+    share of boundary friction that grows as the film (viscosity × speed) thins, so that
+    efficiency can peak at a middle temperature (Stribeck). F = 1 at t_ref at every speed.
+    Seed 000 p.023 lists temperature and input speed among the factors of efficiency.
+
+    References: Stribeck, R. (1902) Z. VDI 46; Hersey, M. D. (1914) J. Wash. Acad. Sci. 4.
     """
     t = np.asarray(temperature_C, dtype=float)
     g = np.exp(-slope_per_K * (t - reference_C))          # viscosity / viscosity at t_ref
@@ -416,7 +419,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
         description=("Efficiency changes with the lubricant temperature through the "
                      "viscosity of the grease or oil (seed 000 p.023 lists temperature among "
                      "the factors; its example is at 20 °C lubricant temperature)."),
-        form="η = η0·Ke(α)/(1 + a·(exp(−b·(t − 20 °C)) − 1)·(n/1000 r/min)^s)",
+        form=("η = η0·Ke(α)/(1 + a·(g − 1)·v + c·(1/g − 1)/v), g = exp(−b·(t − 20 °C)), "
+              "v = (n/1000 r/min)^s"),
         parameters=(
             Parameter("a", "-", "viscous loss / input power at 20 °C and 1000 r/min "
                       "(negative: efficiency falls as the gear warms)", -0.5, 0.9),

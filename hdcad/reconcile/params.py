@@ -71,6 +71,7 @@ def effect_params(problem: Problem, fit: Fit, effect: str) -> dict[str, dict]:
                    float(fx.low_load_factor(np.array(0.58), th["c"], th["q"])), "-")}
     elif effect == "temperature_dependence":
         out = {"a": (th["a"], "-"), "b": (th["b"], "1/K"), "s": (th["s"], "-"),
+               "boundary": (th["boundary"], "-"),
                "t_ref": (fx.REFERENCE_TEMPERATURE_C, "°C")}
     return {k: {"value": float(v), "unit": u} for k, (v, u) in out.items()}
 

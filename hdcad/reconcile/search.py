@@ -252,7 +252,7 @@ def refine_te_order(problem: Problem, fit: Fit) -> Fit:
     for order in range(TE_ORDER, TE_ORDER_MAX + 1):
         problem.te_order = order
         fits[order] = finish(problem, fit.effects, fit.theta, shapes)
-    sigma, phi = noise_model(fits[TE_ORDER_MAX].residual(problem))
+    _, phi = noise_model(fits[TE_ORDER_MAX].residual(problem))
     n_eff = len(problem.rows) / ar1_time(phi)
     best = min(fits, key=lambda o: n_eff * math.log(max(fits[o].rss, 1e-300))
                + fits[o].n_params * math.log(n_eff))
