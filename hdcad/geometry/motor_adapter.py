@@ -25,7 +25,7 @@ from ..checks.bolts import MIN_ENGAGEMENT
 from ..design_options import DesignOptions
 from .features import (COUNTERSINK_FACTOR, LEAD_IN_DEG, OringGland, countersink, lead_in, screw_body,
                        screw_for_grip, shaft_lead_in)
-from .housing_common import EDGE_FACTOR, PILOT_LEAD_IN_MM
+from .housing_common import EDGE_FACTOR, PILOT_LEAD_IN_MM, TAP_RUNOUT_PITCHES
 from .iso286 import iso286_fit
 from .part import BoltCircle, Neighbour, Part
 from .primitives import break_outer_edges, cylinder, ring_points, single_solid
@@ -139,8 +139,9 @@ class MotorAdapter:
     def _face_glands(self) -> dict[str, float]:
         """Inner Ø of the static face O-ring grooves (seed 000 p.028: O-ring or sealant on
         flange faces) on the gear-head face (outside the spigot, inside the flange screws) and
-        the motor face (outside the recess, inside the motor holes and counterbores), where a
-        groove with FACE_LAND_MM lands fits; a face without one is sealed with liquid gasket."""
+        the motor face (outside the recess's lead-in, inside the motor holes and counterbores),
+        where a groove fits with PILOT_LAND_MM inside and the hole ligament outside; a face
+        without one is sealed with liquid gasket."""
         row, m = self.row, self.motor
         # the groove keeps the hole ligament of HOUSING_RULES §4 (≥ 0.5·d and ≥ 2 mm)
         to_motor = max(FACE_LAND_MM, 0.5 * self.d_motor, LIGAMENT_MM)
@@ -182,7 +183,8 @@ class MotorAdapter:
             eng = MIN_ENGAGEMENT[self.options.material] * d
             self.motor_hole = TAP_DRILL_MM[m.bolt_thread]
             self.motor_thread_depth = math.ceil(max(1.5 * d, eng))
-            self.motor_drill = self.motor_thread_depth + 3 * ISO_261_PITCH_MM[m.bolt_thread]
+            self.motor_drill = (self.motor_thread_depth
+                                + TAP_RUNOUT_PITCHES * ISO_261_PITCH_MM[m.bolt_thread])
         else:
             self.motor_hole = ISO_273_MEDIUM_MM[m.bolt_thread]
             self.motor_thread_depth = self.motor_drill = None
