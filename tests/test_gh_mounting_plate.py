@@ -90,3 +90,41 @@ def test_plate_from_the_overlay_measured_on_its_step(tmp_path):
     assert len(patterns) == 2
     result = part_drawing(path, plate, tmp_path / "p.svg", tmp_path / "p.png")
     assert {b["count_found"] for b in result["bolt_circles"]} == {8, 4}
+
+
+THREADS = Path(__file__).parent / "data" / "overlay_gh_threads_TEST_DATA_NOT_CATALOG.yaml"
+
+
+def test_without_thread_depth_the_plate_has_no_review_bodies():
+    _, plate = _plate(load_catalog(OVERLAY))
+    assert plate.neighbours == []
+    assert any("no thread_depth_mm" in n for n in plate.notes)
+
+
+def test_review_assembly_of_both_plates_with_the_gear_head_and_screws():
+    """With the gear head's thread depth (overlay), both plates meet the gear-head housing:
+    nothing overlaps, each screw engages ≥ 1·d (VDI 2230, steel) and stays short of the
+    thread's end; the M10 corner screws' heads sit on the gear side, clear of the housing."""
+    from hdcad.geometry.build import review_plan
+    from hdcad.geometry.review import run_review
+    catalog = load_catalog(THREADS)
+    model = resolve("CSF-45-120-GH", catalog)
+    parts = build_parts(model, catalog, DesignOptions())
+    assert {p.name for p in parts} >= {"motor_flange", "mounting_plate"}
+    result = run_review(parts, review_plan(model, parts))
+    assert not [i for i in result["interferences"] if i["volume_mm3"] > 0.01]
+    screws = result["screws"]
+    m8 = [s for s in screws if "M8" in s["screw"]]
+    m10 = [s for s in screws if "M10" in s["screw"]]
+    assert (len(m8), len(m10)) == (4, 8 + 4)
+    for s in screws:
+        d = 8.0 if "M8" in s["screw"] else 10.0
+        assert d - 1e-6 <= s["engaged"] <= s["thread_depth"] + 1e-6
+    assert {s["thread_depth"] for s in m8} == {12}
+    assert 16 in {s["thread_depth"] for s in m10}
+    plate = next(p for p in parts if p.name == "mounting_plate")
+    corner = [n for n in plate.neighbours if n.kind == "screw" and n.z_mm == 0.0]
+    assert len(corner) == 4
+    for n in corner:   # head on the gear side (z < 0 in plate coordinates)
+        box = n.body.BoundingBox()
+        assert box.zmin < 0 and box.zmax == pytest.approx(n.dims["l"], abs=0.05)

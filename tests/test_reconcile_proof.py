@@ -9,8 +9,9 @@ right in ≥ 90 %; no hidden effect → nothing named in ≥ 90 %; with the righ
 median RMSE reduction ≥ 50 % and reconciled RMSE ≤ 1.15 × noise RMS in ≥ 90 % of cases;
 two effects hidden together are both named (here in ≥ 90 % of ≥ 10 cases).
 
-Each case is generated and reconciled once per session (``run_case`` is cached); the seeds
-are fixed, so every failure is reproducible with ``reconcile_truth.make_case``.
+Each case is generated and reconciled once per session (``run_cases`` caches them and runs
+the new ones in two worker processes); the seeds are fixed, so every failure is
+reproducible with ``reconcile_truth.make_case``.
 """
 
 from __future__ import annotations
@@ -25,7 +26,7 @@ import numpy as np
 import pytest
 
 import reconcile_truth as truth
-from reconcile_cases import run_case
+from reconcile_cases import run_case, run_cases
 from hdcad.models import resolve
 from hdcad.reconcile import COLUMNS, EFFECT_NAMES, KINDS, read_data
 
@@ -40,7 +41,7 @@ COMBOS = truth.COMBO_SCENARIOS
 
 
 def cases(kind: str, effects: tuple[str, ...], count: int) -> list[dict]:
-    return [run_case(kind, effects, seed) for seed in range(count)]
+    return run_cases(kind, effects, range(count))
 
 
 def describe(runs: list[dict], failing: list[dict]) -> str:

@@ -99,6 +99,7 @@ def _gh_mounting(model, catalog) -> list[Part]:
         return []
     part = maker.build()
     part.offset_z_mm = MOUNTING_PLATE_OFFSET_MM
+    part.flip = True   # its gear-head face towards the gear head, between the two plates
     return [part]
 
 
@@ -163,4 +164,7 @@ def review_plan(model: GearModel, parts: list[Part]) -> dict | None:
     if any(p.name == "motor_adapter" for p in parts):
         return {"seed_zr": None, "angles": [45.0],
                 "title": "motor adapter between the flange code's motor side and the motor"}
+    if any(n.body is not None for p in parts for n in p.neighbours):
+        return {"seed_zr": None, "angles": [45.0],
+                "title": "gear-head plates with the gear-head housing (overlay face) and screws"}
     return None

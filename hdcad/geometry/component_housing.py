@@ -46,7 +46,8 @@ from .housing_common import (BEARING_TABLE, CBORE_SINK_MM, EDGE_FACTOR, MIN_FLOO
 from .component_review import (cover_fits, cover_neighbours, flange_fits, flange_neighbours,
                                housing_fits, housing_neighbours)
 from .component_support import Retention
-from .features import countersink, countersink_depth, lead_in, screw_and_grip, shaft_lead_in
+from .features import (blind_hole, countersink, countersink_depth, lead_in, screw_and_grip,
+                       shaft_lead_in)
 from .part import BoltCircle, Part
 from .primitives import cylinder, ring_points, single_solid
 from .standards import (DIN_974_1_CBORE_MM, ISO_261_PITCH_MM, ISO_273_MEDIUM_MM,
@@ -322,7 +323,7 @@ class ComponentSetHousing:
                    out.ring_bore.groove(self.zb - out.ring_bore.m)]
         cutters += out.seal_bore(self.z_shoulder, z1 + MOUNT_SPIGOT_MM)
         cutters += [c for x, y in ring_points(o["cs_bolt_circle_mm"], self.cs_count, 0.0)
-                    for c in (cylinder(self.cs_tap, -1, self.cs_drill, x, y),
+                    for c in (blind_hole(self.cs_tap, 0.0, self.cs_drill, x, y, into=1),
                               countersink(thread_diameter(self.cs_thread), 0.0, x, y, into=1))]
         cutters += [cylinder(ISO_273_MEDIUM_MM[self.mount_thread], z1 - self.mount_t - 1,
                              z1 + 1, x, y)
@@ -365,7 +366,7 @@ class ComponentSetHousing:
                 .faces(">Z").workplane().circle(self.out_d / 2)
                 .extrude(self.journal_len - (collar_end - self.flange_t)))
         cutters = [c for x, y in ring_points(o["fs_bolt_circle_mm"], self.fs_count, 0.0)
-                   for c in (cylinder(self.fs_tap, -1, self.fs_drill, x, y),
+                   for c in (blind_hole(self.fs_tap, 0.0, self.fs_drill, x, y, into=1),
                              countersink(thread_diameter(self.fs_thread), 0.0, x, y, into=1))]
         cutters.append(out.ring_shaft.groove(self.z_shoulder - fs))
         shape = single_solid(body.val(), cutters, self.label)

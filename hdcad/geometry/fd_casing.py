@@ -17,9 +17,9 @@ from __future__ import annotations
 from ..catalog import Catalog
 from ..checks.bolts import MIN_ENGAGEMENT
 from ..design_options import DesignOptions
-from .fd_layout import SPIGOT_DEPTH_MM, WALL_MIN_MM, FDLayout
+from .fd_layout import RECESS_LEAD_IN_MM, SPIGOT_DEPTH_MM, WALL_MIN_MM, FDLayout
 from .fd_notes import casing_notes
-from .features import (TurnedRelief, annulus, countersink, lead_in, screw_and_grip,
+from .features import (TurnedRelief, annulus, blind_hole, countersink, lead_in, screw_and_grip,
                        shaft_lead_in)
 from .housing_common import (CBORE_SINK_MM, EDGE_FACTOR, EDGE_MARGIN_MM, TAP_RUNOUT_PITCHES,
                              check_ring, slack, table_value)
@@ -181,7 +181,7 @@ class FDCasingHalf:
                 lay.bore_ring.groove(lay.bearing_z - lay.bore_ring.m),
                 *lay.seal.bore(lay.shoulder_z, lay.seal_z),
                 cylinder(lay.gear_recess_d, lay.seal_z, t + 1),
-                lead_in(lay.gear_recess_d, t, 0.8, inward=False)]
+                lead_in(lay.gear_recess_d, t, RECESS_LEAD_IN_MM, inward=False)]
         if self.side == "S":
             cuts += [cylinder(lay.gap_journal, -1, lay.s_bore_depth),
                      lead_in(fd2["A_g7_mm"], lay.s_bore_depth, 0.8, inward=True),
@@ -198,7 +198,7 @@ class FDCasingHalf:
             cuts += [cylinder(self.clearance, p - 1, t + 1, x, y),
                      cylinder(self.cbore, t - self.cbore_depth, t + 1, x, y)]
         for x, y, _ in self._gear_holes():
-            cuts += [cylinder(self.tap_drill, t - self.gear_drill_depth, t + 1, x, y),
+            cuts += [blind_hole(self.tap_drill, t, self.gear_drill_depth, x, y),
                      countersink(thread_diameter(self.gear_thread), t, x, y)]
         return cuts
 

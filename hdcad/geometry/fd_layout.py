@@ -44,7 +44,9 @@ SEAL_SET_BACK_MM = 2.0      # lip seal pressed this far below the recess floor: 
 #                             and still ends below the floor the user's gear centres on
 GAP_ORING_MAX_MM = 5.33     # largest O-ring cross-section considered for the running gap
 PORT_THREAD = "M10×1"
-RECESS_LEAD_IN_WIDENING_MM = 0.5  # the gear recess's lead-in chamfer widens it by this (radius)
+RECESS_LEAD_IN_MM = 0.8     # axial length of the gear recess's 20° lead-in chamfer
+# room kept for that chamfer (radius): 0.8·tan 20° = 0.29 mm, rounded up to 0.5
+RECESS_LEAD_IN_WIDENING_MM = 0.5
 
 
 def ceil_to(value: float, step: float) -> float:

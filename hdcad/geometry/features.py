@@ -77,6 +77,22 @@ def lead_in(diameter: float, z_face: float, length: float, inward: bool,
                              length + 0.5, cq.Vector(0, 0, base), cq.Vector(0, 0, sign))
 
 
+DRILL_POINT_DEG = 118.0    # twist-drill point angle at the bottom of a blind hole (HOUSING_RULES §4)
+
+
+def blind_hole(diameter: float, z_face: float, depth: float, x: float = 0.0, y: float = 0.0,
+               into: int = -1) -> cq.Solid:
+    """Cutter of a blind drilled hole Ø ``diameter`` from the face at ``z_face``, ``depth``
+    deep (full diameter) towards ``into`` (−1: −z, +1: +z), with its 118° drill point
+    beyond; it starts 1 mm outside the face so the cut is clean."""
+    tip = diameter / 2 / math.tan(math.radians(DRILL_POINT_DEG / 2))
+    bottom = z_face + into * depth
+    bore = cylinder(diameter, min(z_face - into, bottom), max(z_face - into, bottom), x, y)
+    point = cq.Solid.makeCone(diameter / 2, 0.0, tip, cq.Vector(x, y, bottom),
+                              cq.Vector(0, 0, into))
+    return bore.fuse(point).Solids()[0]
+
+
 COUNTERSINK_FACTOR = 1.05  # countersink Ø at a tapped hole's entry / thread Ø (DIN 76-1 practice)
 
 

@@ -19,9 +19,9 @@ import cadquery as cq
 from ..catalog import Catalog
 from ..design_options import DesignOptions
 from .drive_feature import drive_feature
-from .features import countersink, lead_in, shaft_lead_in
+from .features import blind_hole, countersink, lead_in, shaft_lead_in
 from .gh_interface import NOT_FOR_MANUFACTURE, gear_head_face
-from .housing_common import PILOT_LEAD_IN_MM, TAP_RUNOUT_PITCHES
+from .housing_common import EDGE_MARGIN_MM, PILOT_LEAD_IN_MM, TAP_RUNOUT_PITCHES
 from .iso286 import iso286_fit
 from .part import BoltCircle, Part
 from .primitives import EDGE_BREAK_MM, break_outer_edges, cylinder, ring_points, single_solid
@@ -31,7 +31,6 @@ from .standards import (DIN_974_1_CBORE_MM, ISO_261_PITCH_MM, ISO_273_MEDIUM_MM,
 # ---------------------------------------------------------------------------------------------
 # Design choices (not catalog data); each is printed in the Part notes where it is used.
 # ---------------------------------------------------------------------------------------------
-EDGE_MARGIN_MM = 1.5         # least ligament between a hole and any other edge (outer, pilot, bore, neighbour)
 BORE_CLEARANCE_MM = 1.0      # radial clearance of a central bore around a part that turns relative to it
 PILOT_BOSS_HEIGHT_MM = 1.5   # FD boss into the φB recess; below the smallest FD-0 H (2 mm) in case H is the recess depth
 CBORE_SINK_MM = 0.5          # screw head sits this far below the face
@@ -317,7 +316,7 @@ class GHMotorFlange:
                    cylinder(self.pilot, t - self.pilot_depth, t + 1),
                    lead_in(self.pilot, t, PILOT_LEAD_IN_MM, inward=False)]
         for x, y in ring_points(self.ring, MOTOR_HOLE_COUNT, MOTOR_HOLE_START_DEG):
-            cutters += [cylinder(self.tap_drill, t - self.drill_depth, t + 1, x, y),
+            cutters += [blind_hole(self.tap_drill, t, self.drill_depth, x, y),
                         countersink(thread_diameter(self.thread), t, x, y)]
         circles = [BoltCircle("motor screws", self.ring, MOTOR_HOLE_COUNT, self.tap_drill,
                               self.thread, "tapped", self.thread_depth,
@@ -334,7 +333,8 @@ class GHMotorFlange:
         return Part(name="motor_flange", shape=shape,
                     color=MOTOR_FLANGE_COLOR, dimensions=self._dimensions(),
                     bolt_circles=circles, notes=self._notes() + [EDGE_NOTE],
-                    fits=self._fits())
+                    fits=self._fits(),
+                    neighbours=self.face.neighbours(t) if self.face is not None else [])
 
     def _fits(self) -> list:
         fits = [iso286_fit(self.catalog, "motor pilot", self.pilot, "H7",

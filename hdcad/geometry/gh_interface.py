@@ -16,16 +16,22 @@ face); ISO 286-1/-2, ISO 273, ISO 4762, DIN 974-1, ISO 3601-2.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 from ..catalog import Catalog
-from .features import OringGland
-from .part import BoltCircle
+from .features import OringGland, screw_body, screw_for_grip
+from .housing_common import EDGE_FACTOR
+from .part import BoltCircle, Neighbour
 from .primitives import cylinder, ring_points
-from .standards import DIN_974_1_CBORE_MM, ISO_273_MEDIUM_MM, ISO_4762_HEAD_MM, thread_diameter
+from .standards import (DIN_974_1_CBORE_MM, ISO_261_PITCH_MM, ISO_273_MEDIUM_MM,
+                        ISO_4762_HEAD_MM, thread_diameter)
 
 TABLE = "gh_input_interface"
 CBORE_SINK_MM = 0.5          # head below the motor face (DIN 974-1: depth k + 0.5)
+HOUSING_STUB_MM = 20.0       # modelled depth of the gear-head housing behind its face
+SPIGOT_SHORT_MM = 0.5        # a gear-head spigot stops short of the recess floor
+HOUSING_WALL_MM = 5.0        # modelled wall of the housing stub inside its pilot
 NOT_FOR_MANUFACTURE = ("NOT FOR MANUFACTURE: the gear-head housing face (pilot, bolt circle, "
                        "screws) is not in the seeds (lost figures 053-1 … 064-1); add the "
                        "overlay table gh_input_interface for this series and size")
@@ -51,6 +57,17 @@ class GearHeadFace:
         """(Ø, depth) of the DIN 974-1 counterbore for the ISO 4762 head."""
         thread = self.row["bolt_thread"]
         return DIN_974_1_CBORE_MM[thread], ISO_4762_HEAD_MM[thread][1] + CBORE_SINK_MM
+
+    @property
+    def outline_mm(self) -> float:
+        """The gear head's outline [mm, Ø; a □ as its diagonal's circle]: from the overlay,
+        else the bolt circle plus a 1.5·d rim (said in the plate's notes)."""
+        text = str(self.row.get("outline_mm") or "")
+        if text:
+            value = float(text.lstrip("□Ø"))
+            return value * math.sqrt(2) if text.startswith("□") else value
+        return self.row["bolt_circle_mm"] + 2 * EDGE_FACTOR * thread_diameter(
+            self.row["bolt_thread"])
 
     def least_thickness_mm(self, floor_mm: float) -> float:
         """Plate thickness that leaves ``floor_mm`` under the counterbore (and the recess)."""
@@ -99,7 +116,8 @@ class GearHeadFace:
         r = self.row
         inner = bore if self.spigot else r["pilot_diameter_mm"]
         return BoltCircle("gear-head screws", r["bolt_circle_mm"], r["bolt_count"],
-                          self.clearance_mm, r["bolt_thread"], "clearance", None,
+                          self.clearance_mm, r["bolt_thread"], "clearance",
+                          r.get("thread_depth_mm"),
                           annulus_inner_mm=inner, annulus_outer_mm=outer,
                           outline_square_mm=square, grip_mm=thickness - self.counterbore[1],
                           start_angle_deg=r.get("bolt_start_angle_deg") or 0.0)
@@ -121,6 +139,48 @@ class GearHeadFace:
                     f"no O-ring size in {table}: seal the face with {r.get('sealant') or 'a liquid gasket'} "
                     "(seed 000 table 028-1 asks for a seal on the input-side flange face)")
         return text
+
+    def screw_length(self, thickness: float) -> tuple[int | None, float]:
+        """(ISO 4762 length, engagement) of the gear-head screws seated in the counterbores
+        of a plate ``thickness`` thick: the longest length that engages ≥ 1·d (steel, VDI
+        2230) without bottoming in the overlay's ``thread_depth_mm``; (None, 0) without it."""
+        depth = self.row.get("thread_depth_mm")
+        if not depth:
+            return None, 0.0
+        thread = self.row["bolt_thread"]
+        return screw_for_grip(thread, thickness - self.counterbore[1], depth,
+                              thread_diameter(thread))
+
+    def neighbours(self, thickness: float) -> list[Neighbour]:
+        """The gear-head housing behind the face (z < 0: outline, pilot, tapped holes) and
+        its screws, for the review assembly; none without the overlay's thread_depth_mm."""
+        length, engaged = self.screw_length(thickness)
+        if length is None:
+            return []
+        r, thread = self.row, self.row["bolt_thread"]
+        d = thread_diameter(thread)
+        seat = thickness - self.counterbore[1]
+        points = ring_points(r["bolt_circle_mm"], r["bolt_count"],
+                             r.get("bolt_start_angle_deg") or 0.0)
+        dims = {"d": d, "l": length, "grip": seat, "engaged": engaged,
+                "thread_depth": r["thread_depth_mm"], "engaged_min": d}
+        screws = [Neighbour("screw", f"ISO 4762 {thread}×{length}", dims, seat, xy_mm=(x, y),
+                            body=screw_body(thread, seat, length, x, y)) for x, y in points]
+        return [self._housing(points)] + screws
+
+    def _housing(self, points) -> Neighbour:
+        r = self.row
+        pilot, depth = r["pilot_diameter_mm"], r["pilot_depth_mm"]
+        body = cylinder(self.outline_mm, -HOUSING_STUB_MM, 0.0)
+        if self.spigot:      # the plate's spigot enters the gear head's pilot bore
+            body = body.cut(cylinder(pilot, -depth - SPIGOT_SHORT_MM, 0.5))
+        else:                # the gear head's spigot enters the plate's recess
+            body = body.fuse(cylinder(pilot, -0.5, depth - SPIGOT_SHORT_MM))
+        minor = thread_diameter(r["bolt_thread"]) - ISO_261_PITCH_MM[r["bolt_thread"]]
+        body = body.cut(cylinder(pilot - 2 * HOUSING_WALL_MM, -HOUSING_STUB_MM - 1, depth + 1),
+                        *[cylinder(minor, -r["thread_depth_mm"], 0.5, x, y) for x, y in points])
+        return Neighbour("gear", "gear-head housing (overlay face)", {"pilot": pilot}, 0.0,
+                         body=body.Solids()[0], turns_with="frame")
 
     def pilot_fit(self) -> str:
         return self.row.get("pilot_fit") or ("g6" if self.spigot else "H7")

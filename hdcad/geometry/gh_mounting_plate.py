@@ -31,14 +31,17 @@ from ..catalog import Catalog
 from .gh_interface import GearHeadFace
 from .housing_common import EDGE_FACTOR
 from .iso286 import iso286_fit
-from .part import BoltCircle, GeometricTolerance, Part
+from .features import screw_body, screw_for_grip
+from .part import BoltCircle, GeometricTolerance, Neighbour, Part
 from .primitives import break_outer_edges, cylinder, ring_points, single_solid
-from .standards import ISO_4762_HEAD_MM, thread_diameter
+from .standards import ISO_261_PITCH_MM, ISO_4762_HEAD_MM, thread_diameter
 
 TABLE = "gh_mounting_interface"
 FLOOR_MM = 3.0              # least material under a counterbore or the recess
 HEAD_CLEARANCE_MM = 1.0     # corner screw heads clear of the gear head's outline
 WALL_MM = 3.0               # bore inside a spigot: a 3 mm steel wall (HOUSING_RULES §4)
+FRAME_MM = 20.0             # modelled machine frame behind the plate (an envelope)
+FRAME_THREAD_FACTOR = 2.0   # its tapped depth in thread Ø (assumed: 1·d engagement in steel + run-out)
 MATERIAL = "S235JR (EN 10025-2)"
 COLOR = (0.60, 0.64, 0.58)
 
@@ -58,17 +61,8 @@ class GHMountingPlate:
             row["pilot_diameter_mm"] - 2 * WALL_MM if self.face.spigot
             else row["pilot_diameter_mm"])
         self.head = ISO_4762_HEAD_MM[self.thread][0]
-        self.outline = self._outline()
+        self.outline = self.face.outline_mm
         self.side, self.corner = self._square()
-
-    def _outline(self) -> float:
-        """The gear head's outline [mm, Ø or □ as the diagonal's circle]: from the overlay,
-        else the bolt circle plus a 1.5·d rim (stated in the notes)."""
-        text = str(self.row.get("outline_mm") or "")
-        if text:
-            value = float(text.lstrip("□Ø"))
-            return value * math.sqrt(2) if text.startswith("□") else value
-        return self.row["bolt_circle_mm"] + 2 * EDGE_FACTOR * self.d
 
     def _square(self) -> tuple[float, float]:
         """(□ side, corner-hole offset a): the corner heads clear the outline circle, the
@@ -91,7 +85,34 @@ class GHMountingPlate:
         return Part(name="mounting_plate", shape=shape, color=COLOR,
                     dimensions=self._dimensions(), bolt_circles=self._bolt_circles(),
                     notes=self._notes(), fits=self._fits(), tolerances=self._tolerances(),
-                    material=MATERIAL)
+                    material=MATERIAL, neighbours=self._neighbours())
+
+    def _neighbours(self) -> list[Neighbour]:
+        """Gear-head housing and its screws (when the overlay gives the thread depth), the
+        corner screws with their heads on the gear side and the machine frame's envelope."""
+        gear = self.face.neighbours(self.thickness)
+        if not gear:
+            return []
+        t, d = self.thickness, self.d
+        depth = FRAME_THREAD_FACTOR * d
+        length, engaged = screw_for_grip(self.thread, t, depth, d)
+        if length is None:
+            return gear
+        dims = {"d": d, "l": length, "grip": t, "engaged": engaged, "thread_depth": depth,
+                "engaged_min": d}
+        points = ring_points(2 * math.sqrt(2) * self.corner, 4, 45.0)
+        screws = [Neighbour("screw", f"ISO 4762 {self.thread}×{length}", dims, 0.0,
+                            xy_mm=(x, y), flip=True,
+                            body=screw_body(self.thread, 0.0, length, x, y).mirror("XY"))
+                  for x, y in points]
+        minor = d - ISO_261_PITCH_MM[self.thread]
+        frame = cq.Solid.makeBox(self.side, self.side, FRAME_MM,
+                                 cq.Vector(-self.side / 2, -self.side / 2, t)).cut(
+            cylinder(self.bore, t - 1, t + FRAME_MM + 1),
+            *[cylinder(minor, t - 0.5, t + depth, x, y) for x, y in points])
+        return gear + screws + [Neighbour("other", "machine frame (envelope, tapped "
+                                          f"{depth:g} deep)", {}, t,
+                                          body=frame.Solids()[0], turns_with="frame")]
 
     def _dimensions(self) -> dict[str, float]:
         r = self.row
@@ -127,6 +148,21 @@ class GHMountingPlate:
                 GeometricTolerance("gear-head pilot", "perpendicularity", 0.02, "A", rules),
                 GeometricTolerance("hole circles", "position", 0.1, "A|B", rules)]
 
+    def _screw_note(self) -> str:
+        length, engaged = self.face.screw_length(self.thickness)
+        depth = self.row.get("thread_depth_mm")
+        if not depth:
+            return ("the overlay has no thread_depth_mm for the gear head's tapped holes: the "
+                    "gear-head screws' length and engagement and the plate's review assembly "
+                    "are not evaluated")
+        if length is None:
+            return (f"no ISO 4762 {self.thread} length engages ≥ 1·d without bottoming in the "
+                    f"gear head's {depth:g} mm thread: choose the screws by hand")
+        return (f"gear-head screws ISO 4762 {self.thread}×{length}: engage {engaged:g} mm of the "
+                f"gear head's {depth:g} mm thread (overlay); review assembly with the gear-head "
+                f"housing, the corner screws and a machine frame tapped "
+                f"{FRAME_THREAD_FACTOR:g}·d deep (an envelope)")
+
     def _notes(self) -> list[str]:
         r = self.row
         outline = ("from the overlay" if r.get("outline_mm") else
@@ -139,6 +175,7 @@ class GHMountingPlate:
             + ("(overlay bore_mm)" if r.get("bore_mm") else
                "(overlay has no bore_mm: the pilot Ø" + (f" less a {WALL_MM:g} mm wall)"
                                                          if self.face.spigot else ")")),
+            self._screw_note(),
             f"4 × Ø{self.clearance:g} for {self.thread} into the machine frame at the corners "
             f"(□{2 * self.corner:g} pattern), heads {HEAD_CLEARANCE_MM:g} mm clear of the gear "
             f"head outline Ø{self.outline:.1f} ({outline}): reachable with the gear head fitted",

@@ -17,7 +17,7 @@ SEAL_TABLE = "shaft_seal_iso6194"             # ISO 6194-1 / DIN 3760 rows (cata
 # ---------------------------------------------------------------------------------------------
 # Design choices (not catalog or standard data); each is printed in the Part notes.
 # ---------------------------------------------------------------------------------------------
-EDGE_MARGIN_MM = 1.5       # least ligament between a hole and another edge (as in flanges.py)
+EDGE_MARGIN_MM = 1.5       # least ligament between a hole and any other edge (outer, pilot, bore, neighbour)
 CBORE_WALL_MIN_MM = 0.5    # least wall between a counterbore and the 3 mm spigot recess: sizes
 #                            20/25 leave 0.75/1.0 mm with DIN 974-1 counterbores on FD-2 φI
 SHAFT_CLEARANCE_MM = 1.0   # radial clearance of the shaft hole: the WG shaft turns in the casing

@@ -23,8 +23,8 @@ from dataclasses import dataclass
 from ..catalog import Catalog
 from ..checks.bolts import MIN_ENGAGEMENT
 from ..design_options import DesignOptions
-from .features import (COUNTERSINK_FACTOR, LEAD_IN_DEG, OringGland, countersink, lead_in, screw_body,
-                       screw_for_grip, shaft_lead_in)
+from .features import (COUNTERSINK_FACTOR, LEAD_IN_DEG, OringGland, blind_hole, countersink,
+                       lead_in, screw_body, screw_for_grip, shaft_lead_in)
 from .housing_common import EDGE_FACTOR, PILOT_LEAD_IN_MM, TAP_RUNOUT_PITCHES
 from .iso286 import iso286_fit
 from .part import BoltCircle, Neighbour, Part
@@ -283,10 +283,10 @@ class MotorAdapter:
         for x, y in ring_points(self.row["bolt_circle_mm"], FLANGE_HOLES, FLANGE_START_DEG):
             cuts += [cylinder(self.flange_hole, -1, t + 1, x, y),
                      cylinder(self.cbore, t - self.cbore_depth, t + 1, x, y)]
-        m_from = t - (self.motor_drill if self.motor_drill else t + 1)
         for x, y in ring_points(self.motor.bolt_circle_mm, self.motor.bolt_count,
                                 self.motor_start):
-            cuts.append(cylinder(self.motor_hole, m_from, t + 1, x, y))
+            cuts.append(blind_hole(self.motor_hole, t, self.motor_drill, x, y)
+                        if self.motor_drill else cylinder(self.motor_hole, -1, t + 1, x, y))
             if self.motor.holes == "clearance":  # tapped here: countersunk entry
                 cuts.append(countersink(thread_diameter(self.motor.bolt_thread), t, x, y))
         shape = single_solid(body, cuts + self.face_cutters(), self.label)

@@ -12,8 +12,9 @@ COLORS = {"spacer": "#aaaaaa", "part": "#b8c0cc", "bearing": "#5b8bd9", "seal": 
           "shaft": "#e8d8a8", "motor": "#c9a0dc", "other": "#999999"}
 LEGEND = {"part": "generated part", "bearing": "bearing", "seal": "seal / O-ring",
           "ring": "retaining ring", "screw": "screw", "plug": "plug",
-          "gear": "gear (catalog outline)", "shaft": "user's shaft",
-          "motor": "motor envelope", "spacer": "spacer"}
+          "gear": "gear or gear head (catalog or overlay outline)",
+          "shaft": "user's shaft", "motor": "motor envelope", "spacer": "spacer",
+          "other": "machine frame (envelope)"}
 
 
 def render_section(bodies, angle_deg: float, path: Path, title: str) -> Path:

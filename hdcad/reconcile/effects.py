@@ -360,7 +360,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                      "depend on the loading direction, a loop (seed 000 p.020; figures seed "
                      "003 p.052/p.060)."),
         form=("θ = θ_catalog(T) − z_sat·z(T history; T_s, ρ, n, z0, first_scale)  "
-              "(Bouc–Wen in torque)"),
+              "(Bouc–Wen in torque: friction in parallel with the gear); with a series "
+              "spring of compliance z_sat/T_s it reads as a slip element in series, "
+              "θ_catalog(T) + z_sat·(T/T_s − z) (Iwan, Preisach)"),
         parameters=(
             Parameter("z_sat", "rad", "saturation of the hysteretic twist", 0.0, 20.0,
                       "hysteresis_rad", linear=True),

@@ -66,6 +66,10 @@ class Problem:
     outliers: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=int))
     step_position: float = 0.0
     te_order: int = TE_ORDER  # Legendre order of the TE amplitude and phase
+    # hysteresis as a slip element in series with the gear (z_sat·(T/T_s − z)) instead of
+    # friction in parallel with it (−z_sat·z): the reading a hysteresis + spring pair is
+    # tested against
+    hysteresis_series: bool = False
     cache: dict = field(default_factory=dict)
 
     @property
@@ -231,6 +235,8 @@ def columns(problem: Problem, effects: tuple[str, ...], theta: dict[str, float],
         elif name == "hysteresis":
             z = fx.hysteresis_state(inp["torque_Nm"], th["T_s"], th["rho"], th["n"], branches,
                                     th["z0"], th["first_scale"])
+            if problem.hysteresis_series:
+                z = z - inp["torque_Nm"] / th["T_s"]
             add(name, ["z_sat"], -z, 0.0)
         elif name == "backlash":
             add(name, ["lost_motion"], fx.backlash_twist(inp["torque_Nm"], 1.0, th["T_w"]), 0.0)

@@ -58,6 +58,8 @@ def effect_params(problem: Problem, fit: Fit, effect: str) -> dict[str, dict]:
                "loss_at_T0": (fx.hysteresis_loss(b["z_sat"], th["T_s"], th["rho"], th["n"], t0),
                               "rad"),
                "T0": (t0, "N·m")}
+        # the compliance of the loop read as a slip element in series (z_sat·(T/T_s − z))
+        out["slip_compliance"] = (b["z_sat"] / th["T_s"], "rad/(N·m)")
     elif effect == "backlash":
         out = {"lost_motion": (b["lost_motion"], "rad"), "T_w": (th["T_w"], "N·m")}
     elif effect == "housing_compliance":

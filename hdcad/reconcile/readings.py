@@ -98,6 +98,29 @@ def nuisances(problem: Problem, fit: Fit) -> list[dict]:
     return out
 
 
+def series_slip(tied: bool) -> list[dict]:
+    """The other reading of a hysteresis + housing_compliance pair whose spring is the
+    loop's own slip compliance."""
+    if not tied:
+        return []
+    return [{"alternative": ["hysteresis"], "reading": "series_slip",
+             "text": "the series spring equals the loop's own slip compliance z_sat/T_s: one "
+                     "slip element in series with the gear (Iwan, Preisach) reads the same as "
+                     "friction plus a housing spring; check the housing's stiffness before "
+                     "stiffening it"}]
+
+
+def undecided(named: tuple[str, ...], rivals: tuple[str, ...]) -> list[dict]:
+    """The reading of a second effect left unnamed because two fit about equally."""
+    if not rivals:
+        return []
+    return [{"undecided": list(rivals), "beside": list(named),
+             "text": f"what {' + '.join(named)} leaves is explained about equally well by "
+                     f"{rivals[0]} or by {rivals[1]}: neither is named (the shape "
+                     f"{' + '.join(named)}'s formula misses, or either effect; a test that "
+                     "separates them decides)"}]
+
+
 def equivalent(problem: Problem, fit: Fit, named: tuple[str, ...], found: list[dict]
                ) -> list[dict]:
     """Readings the data cannot tell apart from what was named or fitted."""

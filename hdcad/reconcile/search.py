@@ -15,6 +15,11 @@
    must not be named as a second effect.
 4. Evidence of the effect's signature: hysteresis needs loading and unloading branches that
    differ beyond the noise (a loop), not only a better fit (:func:`loop_evidence`).
+5. Readings: when another pair with the same first member comes within
+   ``SECOND_AMBIGUITY`` of the best pair's ΔBIC, the second is not identified and only the
+   first is named (:func:`ambiguous_second`); a hysteresis + housing spring pair whose
+   spring is the loop's own slip compliance is reported with its series-slip reading
+   (:func:`series_slip`).
 
 References
 ----------
@@ -28,7 +33,7 @@ from __future__ import annotations
 
 import itertools
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -42,6 +47,10 @@ BIC_MIN = 10.0
 CV_GAIN_MIN = 0.05
 EXPLAINED_MIN = 0.1
 SECOND_SHARE_MIN = 0.3
+# Two pairs that share a member and whose ΔBIC differ by less than this share of the best:
+# what the shared member leaves fits either other member about as well, so it is shape the
+# shared member's formula misses, not an identified second effect.
+SECOND_AMBIGUITY = 0.05
 # Loop evidence: branch separation χ² z-score and RMS (in noise RMS) over torque bins.
 LOOP_Z = 5.0
 LOOP_RMS_MIN = 0.5
@@ -140,6 +149,8 @@ class Candidate:
     gate: Gate
     passes: bool
     reason: str = ""
+    undecided: tuple[str, ...] = ()   # second effects left unnamed as ambiguous
+    series_slip: bool = False         # the pair reads the same as one series slip element
 
 
 def select_rig(problem: Problem, start: Fit) -> tuple[Fit, list[dict], dict[str, Fit] | None]:
@@ -197,7 +208,59 @@ def select_gear(problem: Problem, start: Fit, singles: dict[str, Fit] | None = N
         out.append(_pair(problem, start, singles[a], singles[b], fit, sigma, tau))
     passing = [c for c in out if c.passes]
     best = max(passing, key=lambda c: c.gate.delta_bic) if passing else None
+    best = _unless_ambiguous(best, passing)
+    if best is not None and series_slip(problem, start, best, sigma, tau):
+        best = replace(best, series_slip=True)
     return best, out
+
+
+def ambiguous_second(best: Candidate, passing: list[Candidate]
+                     ) -> tuple[str, tuple[str, str]] | None:
+    """(shared member, (second, rival)) when another passing pair shares a member with the
+    ``best`` pair and comes within ``SECOND_AMBIGUITY`` of its ΔBIC; else None."""
+    if len(best.effects) < 2:
+        return None
+    floor = (1.0 - SECOND_AMBIGUITY) * best.gate.delta_bic
+    for shared in best.effects:
+        second = next(e for e in best.effects if e != shared)
+        for c in passing:
+            if (len(c.effects) == 2 and shared in c.effects and second not in c.effects
+                    and c.gate.delta_bic >= floor):
+                rival = next(e for e in c.effects if e != shared)
+                return shared, (second, rival)
+    return None
+
+
+def _unless_ambiguous(best: Candidate | None, passing: list[Candidate]) -> Candidate | None:
+    """The best pair, or its shared member alone when its second is ambiguous
+    (:func:`ambiguous_second`) and that member passes alone."""
+    found = ambiguous_second(best, passing) if best else None
+    if found is None:
+        return best
+    single = next((c for c in passing if c.effects == (found[0],)), None)
+    return replace(single, undecided=found[1]) if single else best
+
+
+def series_slip(problem: Problem, start: Fit, best: Candidate, sigma: float, tau: float
+                ) -> bool:
+    """Whether a hysteresis + housing_compliance pair reads the same as one slip element in
+    series with the gear (its spring is the loop's own slip compliance).
+
+    Friction in parallel with the gear (Bouc–Wen, −z_sat·z) plus a spring of compliance
+    z_sat/T_s is, term for term, a slip element in series (z_sat·(T/T_s − z): Iwan,
+    Preisach, Masing–Ramberg–Osgood loops add their slip to the gear's twist). At the pair's
+    own shape the compliance is tied to z_sat/T_s; when BIC does not prefer the free spring
+    to the tie (ΔBIC ≤ 0) the data read the same both ways, and the report gives both.
+    """
+    if set(best.effects) != {"hysteresis", "housing_compliance"}:
+        return False
+    effects = start.effects + ("hysteresis",)
+    problem.hysteresis_series = True
+    try:
+        tied = finish(problem, effects, best.fit.theta, len(nonlinear(problem.kind, effects)))
+    finally:
+        problem.hysteresis_series = False
+    return gate(problem, tied, best.fit, sigma, tau).delta_bic <= 0.0
 
 
 def _pair_fit(problem: Problem, start: Fit, fa: Fit, fb: Fit) -> Fit:

@@ -162,7 +162,9 @@ def reconcile(kind: str, data: dict, model: GearModel, catalog: Catalog,
     nuisances = readings.nuisances(problem, final)
     return _result(problem, model, start, final, resid0, residual, sigma, tau, keep, steps,
                    candidates, rig_table, measurement, nuisances,
-                   readings.equivalent(problem, final, named, nuisances))
+                   readings.equivalent(problem, final, named, nuisances)
+                   + readings.undecided(named, best.undecided if best else ())
+                   + readings.series_slip(bool(best and best.series_slip)))
 
 
 def _steps(problem, named, candidates, final, keep) -> list[Step]:
