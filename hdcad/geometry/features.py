@@ -77,7 +77,7 @@ def lead_in(diameter: float, z_face: float, length: float, inward: bool,
                              length + 0.5, cq.Vector(0, 0, base), cq.Vector(0, 0, sign))
 
 
-DRILL_POINT_DEG = 118.0    # twist-drill point angle at the bottom of a blind hole (HOUSING_RULES §4)
+DRILL_POINT_DEG = 118.0    # drill point angle of a blind hole (HOUSING_RULES §4)
 
 
 def blind_hole(diameter: float, z_face: float, depth: float, x: float = 0.0, y: float = 0.0,

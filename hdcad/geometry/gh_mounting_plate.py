@@ -28,10 +28,10 @@ import math
 import cadquery as cq
 
 from ..catalog import Catalog
+from .features import screw_body, screw_for_grip
 from .gh_interface import GearHeadFace
 from .housing_common import EDGE_FACTOR
 from .iso286 import iso286_fit
-from .features import screw_body, screw_for_grip
 from .part import BoltCircle, GeometricTolerance, Neighbour, Part
 from .primitives import break_outer_edges, cylinder, ring_points, single_solid
 from .standards import ISO_261_PITCH_MM, ISO_4762_HEAD_MM, thread_diameter
@@ -41,7 +41,7 @@ FLOOR_MM = 3.0              # least material under a counterbore or the recess
 HEAD_CLEARANCE_MM = 1.0     # corner screw heads clear of the gear head's outline
 WALL_MM = 3.0               # bore inside a spigot: a 3 mm steel wall (HOUSING_RULES §4)
 FRAME_MM = 20.0             # modelled machine frame behind the plate (an envelope)
-FRAME_THREAD_FACTOR = 2.0   # its tapped depth in thread Ø (assumed: 1·d engagement in steel + run-out)
+FRAME_THREAD_FACTOR = 2.0   # its tapped depth / thread Ø (assumed: 1·d in steel + run-out)
 MATERIAL = "S235JR (EN 10025-2)"
 COLOR = (0.60, 0.64, 0.58)
 
