@@ -46,8 +46,8 @@ from .housing_common import (BEARING_TABLE, CBORE_SINK_MM, EDGE_FACTOR, MIN_FLOO
 from .component_review import (cover_fits, cover_neighbours, flange_fits, flange_neighbours,
                                housing_fits, housing_neighbours)
 from .component_support import Retention
-from .features import (blind_hole, countersink, countersink_depth, lead_in, screw_and_grip,
-                       shaft_lead_in)
+from .features import (blind_hole, countersink, countersink_depth, drill_point, lead_in,
+                       screw_and_grip, shaft_lead_in)
 from .part import BoltCircle, Part
 from .primitives import cylinder, ring_points, single_solid
 from .standards import (DIN_974_1_CBORE_MM, ISO_261_PITCH_MM, ISO_273_MEDIUM_MM,
@@ -202,7 +202,7 @@ class ComponentSetHousing:
                          + WALL_ALLOWANCE_MM)
         self.recess_depth = o["cs_width_mm"] + SPIGOT_MM
         # output flange: the tapped FS-screw holes plus a floor set its thickness
-        self.flange_t = self.fs_drill + MIN_FLOOR_MM
+        self.flange_t = self.fs_drill + drill_point(self.fs_tap) + MIN_FLOOR_MM
         self.flange_r = h.get("output_flange_radius_mm") or DEFAULT_FLANGE_RADIUS_MM
         self.cavity_beyond = max(h["diaphragm_side_depth_mm"] + WALL_ALLOWANCE_MM,
                                  self.flange_t + AXIAL_GAP_MM)

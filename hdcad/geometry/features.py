@@ -80,12 +80,18 @@ def lead_in(diameter: float, z_face: float, length: float, inward: bool,
 DRILL_POINT_DEG = 118.0    # drill point angle of a blind hole (HOUSING_RULES §4)
 
 
+def drill_point(diameter: float) -> float:
+    """Axial length [mm] of the 118° point below a drilled hole's full diameter: a floor
+    under a blind hole is measured from its tip."""
+    return diameter / 2 / math.tan(math.radians(DRILL_POINT_DEG / 2))
+
+
 def blind_hole(diameter: float, z_face: float, depth: float, x: float = 0.0, y: float = 0.0,
                into: int = -1) -> cq.Solid:
     """Cutter of a blind drilled hole Ø ``diameter`` from the face at ``z_face``, ``depth``
     deep (full diameter) towards ``into`` (−1: −z, +1: +z), with its 118° drill point
     beyond; it starts 1 mm outside the face so the cut is clean."""
-    tip = diameter / 2 / math.tan(math.radians(DRILL_POINT_DEG / 2))
+    tip = drill_point(diameter)
     bottom = z_face + into * depth
     bore = cylinder(diameter, min(z_face - into, bottom), max(z_face - into, bottom), x, y)
     point = cq.Solid.makeCone(diameter / 2, 0.0, tip, cq.Vector(x, y, bottom),

@@ -19,7 +19,7 @@ import cadquery as cq
 from ..catalog import Catalog
 from ..design_options import DesignOptions
 from .drive_feature import drive_feature
-from .features import blind_hole, countersink, lead_in, shaft_lead_in
+from .features import blind_hole, countersink, drill_point, lead_in, shaft_lead_in
 from .gh_interface import NOT_FOR_MANUFACTURE, gear_head_face
 from .housing_common import EDGE_MARGIN_MM, PILOT_LEAD_IN_MM, TAP_RUNOUT_PITCHES
 from .iso286 import iso286_fit
@@ -283,13 +283,15 @@ class GHMotorFlange:
             # the gear-head face's outline, when larger than the motor side needs
             self.outer = max(self.outer, self.face.row["outline_mm"])
         self.bore = row["coupling_bore_max_mm"] + 2 * BORE_CLEARANCE_MM
+        floor = drill_point(self.tap_drill) + MIN_FLOOR_MM   # under the drill's tip
         self.thickness = max(self.options.wall_mm, self.pilot_depth + MIN_FLOOR_MM,
-                             self.drill_depth + MIN_FLOOR_MM)
+                             self.drill_depth + floor)
         if self.face is not None:
             # under the counterbores, and between a gear-head recess and the motor side
             recess = 0.0 if self.face.spigot else self.face.row["pilot_depth_mm"]
             self.thickness = max(self.thickness, self.face.least_thickness_mm(MIN_UNDER_HEAD_MM),
-                                 recess + max(self.pilot_depth, self.drill_depth) + MIN_FLOOR_MM)
+                                 recess + max(self.pilot_depth + MIN_FLOOR_MM,
+                                              self.drill_depth + floor))
         self.hole_for_fit = d  # thread major diameter: the ligament is measured from it
 
     def _check(self) -> None:
@@ -371,7 +373,7 @@ class GHMotorFlange:
             f"{BORE_CLEARANCE_MM:g} mm (coupling outside diameter is not in the seed)",
             *(self.face.notes() if self.face is not None else [NOT_FOR_MANUFACTURE]),
             f"thickness {self.thickness:g} mm = max(wall_mm, pilot depth + {MIN_FLOOR_MM:g}, "
-            f"drill depth + {MIN_FLOOR_MM:g})",
+            f"drill depth + 118° point {drill_point(self.tap_drill):.1f} + {MIN_FLOOR_MM:g})",
         ]
         if row["pilot_depth_mm"] is None:
             notes.append(f"pilot depth not in table {row['table']} for {self.code}: design value "

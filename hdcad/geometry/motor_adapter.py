@@ -24,7 +24,7 @@ from ..catalog import Catalog
 from ..checks.bolts import MIN_ENGAGEMENT
 from ..design_options import DesignOptions
 from .features import (COUNTERSINK_FACTOR, LEAD_IN_DEG, OringGland, blind_hole, countersink,
-                       lead_in, screw_body, screw_for_grip, shaft_lead_in)
+                       drill_point, lead_in, screw_body, screw_for_grip, shaft_lead_in)
 from .housing_common import EDGE_FACTOR, PILOT_LEAD_IN_MM, TAP_RUNOUT_PITCHES
 from .iso286 import iso286_fit
 from .part import BoltCircle, Neighbour, Part
@@ -203,7 +203,7 @@ class MotorAdapter:
         head_seat = self.head_k + 0.5 + max(FLOOR_MM, self.d_flange / 2)
         need.append(head_seat + (self.recess if self.cbore_from_recess else 0.0))
         if self.motor_drill is not None:
-            need.append(self.motor_drill + FLOOR_MM)
+            need.append(self.motor_drill + drill_point(self.motor_hole) + FLOOR_MM)
         return math.ceil(max(need))
 
     @property
