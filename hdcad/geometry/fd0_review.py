@@ -8,7 +8,7 @@ from ..checks.bolts import MIN_ENGAGEMENT
 from .features import screw_body, screw_for_grip
 from .part import Neighbour
 from .primitives import cylinder, ring_points
-from .standards import ISO_261_PITCH_MM, thread_diameter
+from .standards import review_minor_diameter, thread_diameter
 
 RECESS_MM = 2.0   # φB recess depth: not in table 311-1 (figure lost); the smallest FD-0 H
 
@@ -36,7 +36,7 @@ def flange_neighbours(flange, with_unit: bool) -> list[Neighbour]:
 
 def _unit(flange) -> Neighbour:
     row = flange.row
-    width, minor = row["D_mm"], thread_diameter(flange.thread) - ISO_261_PITCH_MM[flange.thread]
+    width, minor = row["D_mm"], review_minor_diameter(flange.thread)
     body = cylinder(row["A_mm"], -width, 0.0)
     cuts = [cylinder(row["B_H7_mm"], -RECESS_MM, 0.5),
             cylinder(row["B_H7_mm"], -width - 0.5, -width + RECESS_MM),

@@ -8,7 +8,7 @@ from ..checks.bolts import MIN_ENGAGEMENT
 from .features import annulus, screw_body
 from .part import Neighbour
 from .primitives import cylinder, ring_points
-from .standards import ISO_261_PITCH_MM, thread_diameter
+from .standards import review_minor_diameter, thread_diameter
 
 
 def casing_neighbours(half) -> list[Neighbour]:
@@ -54,7 +54,7 @@ def _circular_spline(half) -> Neighbour:
     for this outline only)."""
     fd2, lay, gap = half.fd2, half.lay, half.options.running_gap_mm
     z0, z1 = fd2["C_mm"] / 2 - gap / 2, lay.pilot_depth
-    minor = thread_diameter(half.screw) - ISO_261_PITCH_MM[half.screw]
+    minor = review_minor_diameter(half.screw)
     body = annulus(fd2["S_mm"], fd2["A_g7_mm"], z0, z1)
     holes = [cylinder(minor, z1 - fd2["K_depth_mm"], z1 + 1, x, y)
              for x, y in ring_points(fd2["I_mm"], fd2["J_count"], 0.0)]

@@ -436,8 +436,8 @@ def screw_body(thread: str, seat_z: float, length: float, x: float, y: float) ->
     """An ISO 4762 screw for the review assembly: head true size (dk × k) above ``seat_z``,
     the shank at the thread's minor (tap-drill) Ø below it, so that a screw in its tapped
     hole does not count as interference."""
-    from .standards import ISO_261_PITCH_MM, ISO_4762_HEAD_MM, thread_diameter
+    from .standards import ISO_4762_HEAD_MM, review_minor_diameter
     dk, k = ISO_4762_HEAD_MM[thread]
-    minor = thread_diameter(thread) - ISO_261_PITCH_MM[thread]
+    minor = review_minor_diameter(thread)
     return cylinder(dk, seat_z, seat_z + k, x, y).fuse(
         cylinder(minor, seat_z - length, seat_z + 0.01, x, y)).Solids()[0]

@@ -24,8 +24,8 @@ from .features import OringGland, screw_body, screw_for_grip
 from .housing_common import EDGE_FACTOR
 from .part import BoltCircle, Neighbour
 from .primitives import cylinder, ring_points
-from .standards import (DIN_974_1_CBORE_MM, ISO_261_PITCH_MM, ISO_273_MEDIUM_MM,
-                        ISO_4762_HEAD_MM, thread_diameter)
+from .standards import (DIN_974_1_CBORE_MM, ISO_273_MEDIUM_MM, ISO_4762_HEAD_MM,
+                        review_minor_diameter, thread_diameter)
 
 TABLE = "gh_input_interface"
 CBORE_SINK_MM = 0.5          # head below the motor face (DIN 974-1: depth k + 0.5)
@@ -176,7 +176,7 @@ class GearHeadFace:
             body = body.cut(cylinder(pilot, -depth - SPIGOT_SHORT_MM, 0.5))
         else:                # the gear head's spigot enters the plate's recess
             body = body.fuse(cylinder(pilot, -0.5, depth - SPIGOT_SHORT_MM))
-        minor = thread_diameter(r["bolt_thread"]) - ISO_261_PITCH_MM[r["bolt_thread"]]
+        minor = review_minor_diameter(r["bolt_thread"])
         body = body.cut(cylinder(pilot - 2 * HOUSING_WALL_MM, -HOUSING_STUB_MM - 1, depth + 1),
                         *[cylinder(minor, -r["thread_depth_mm"], 0.5, x, y) for x, y in points])
         return Neighbour("gear", "gear-head housing (overlay face)", {"pilot": pilot}, 0.0,

@@ -34,7 +34,7 @@ from .housing_common import EDGE_FACTOR
 from .iso286 import iso286_fit
 from .part import BoltCircle, GeometricTolerance, Neighbour, Part
 from .primitives import break_outer_edges, cylinder, ring_points, single_solid
-from .standards import ISO_261_PITCH_MM, ISO_4762_HEAD_MM, thread_diameter
+from .standards import ISO_4762_HEAD_MM, review_minor_diameter, thread_diameter
 
 TABLE = "gh_mounting_interface"
 FLOOR_MM = 3.0              # least material under a counterbore or the recess
@@ -105,7 +105,7 @@ class GHMountingPlate:
                             xy_mm=(x, y), flip=True,
                             body=screw_body(self.thread, 0.0, length, x, y).mirror("XY"))
                   for x, y in points]
-        minor = d - ISO_261_PITCH_MM[self.thread]
+        minor = review_minor_diameter(self.thread)
         frame = cq.Solid.makeBox(self.side, self.side, FRAME_MM,
                                  cq.Vector(-self.side / 2, -self.side / 2, t)).cut(
             cylinder(self.bore, t - 1, t + FRAME_MM + 1),

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from .part import GeometricTolerance, Neighbour
 from .primitives import cylinder, ring_points
-from .standards import ISO_261_PITCH_MM
+from .standards import review_minor_diameter
 
 MATERIALS = {"steel": "S235JR (EN 10025-2)", "aluminium": "EN AW-6082 T6 (EN 573-3)",
              "cast_iron": "EN-GJL-250 (EN 1561)"}
@@ -92,7 +92,7 @@ def _flange_body(a) -> Neighbour:
     depth = row.get("pilot_depth_mm") or a.spigot + 0.5
     outer = row.get("square_mm") or size
     body = cylinder(outer * 1.0, -FLANGE_BODY_MM, 0.0)
-    minor = a.d_flange - ISO_261_PITCH_MM[row["thread"]]
+    minor = review_minor_diameter(row["thread"])
     holes = [cylinder(minor, -row["thread_depth_mm"], 0.5, x, y)
              for x, y in ring_points(row["bolt_circle_mm"], 4, 45.0)]
     body = body.cut(cylinder(row["pilot_H7_mm"], -depth, 0.5),

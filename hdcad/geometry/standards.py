@@ -52,3 +52,9 @@ def thread_diameter(thread: str) -> float:
         raise ValueError(f"thread {thread!r} is not in the ISO 261 table of "
                          f"hdcad.geometry.standards; known: {', '.join(ISO_261_PITCH_MM)}")
     return float(thread[1:])
+
+
+def review_minor_diameter(thread: str) -> float:
+    """d − P [mm]: the Ø at which the review assembly models a screw's shank and its tapped
+    hole, so that a screw in its thread does not count as interference."""
+    return thread_diameter(thread) - ISO_261_PITCH_MM[thread]
