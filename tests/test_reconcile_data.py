@@ -23,7 +23,7 @@ from hdcad.resources import examples_dir
 EXAMPLE = examples_dir() / "reconcile_torsion_synthetic.csv"
 JSON_KEYS = {"kind", "model", "disagreements", "missing_effects", "rmse_before", "rmse_after",
              "measurement_effects", "nuisances", "equivalent_readings", "noise_rms", "outliers",
-             "steps", "unexplained"}
+             "steps", "unexplained", "notes"}
 
 
 def write_csv(path, header, rows):

@@ -17,6 +17,7 @@ from hdcad.checks.stiffness import natural_frequency, resonant_input_speed
 from hdcad.models import resolve
 from hdcad.reconcile import EFFECT_NAMES, EFFECTS, KINDS
 from hdcad.reconcile import effects as fx
+from hdcad.reconcile import joint
 from hdcad.reconcile.baseline import catalog_twist
 from hdcad.reconcile.noise import correlation_time, noise_rms
 
@@ -157,7 +158,7 @@ def test_joint_steady_amplitude_is_the_sdof_frequency_response(ratio_to_fn):
     fn = math.sqrt(k / j) / (2 * math.pi)
     f = ratio_to_fn * fn
     t = np.arange(0, 60 / (zeta * fn), 1 / (40 * max(f, fn)))   # ≫ decay time 1/(ζ·ω)
-    theta = fx.joint_response(t, np.sin(2 * math.pi * f * t), k, j, zeta)
+    theta = joint.joint_response(t, np.sin(2 * math.pi * f * t), k, j, zeta)
     tail = theta[len(t) * 3 // 4:]
     amplitude = 0.5 * (tail.max() - tail.min())
     r = ratio_to_fn
@@ -168,11 +169,11 @@ def test_joint_starts_in_static_equilibrium_and_both_solvers_agree():
     k, j, zeta = 67000.0, 5.0, 0.05
     t = np.linspace(0, 2.0, 4001)
     e = 1e-4 * np.sin(2 * math.pi * 3.0 * t + 1.0)
-    even = fx.joint_response(t, e, k, j, zeta)
+    even = joint.joint_response(t, e, k, j, zeta)
     assert even[0] == pytest.approx(e[0], rel=1e-9)
     uneven_t = t.copy()
     uneven_t[1:-1] += 1e-5 * np.sin(np.arange(1, len(t) - 1))  # forces the lsim path
-    uneven = fx.joint_response(uneven_t, e, k, j, zeta)
+    uneven = joint.joint_response(uneven_t, e, k, j, zeta)
     assert np.max(np.abs(uneven - even)) < 0.01 * np.max(np.abs(even))
 
 
@@ -186,7 +187,7 @@ def test_te_2x_resonates_at_the_seed_input_speed():
     for n in speeds:
         t = np.arange(0, 4.0, 1e-3)
         phi = 2 * math.pi * n / 60 * t
-        theta = fx.joint_response(t, fx.harmonic_error(phi, 2, 1.0, 0.0), k, j, 0.05)
+        theta = joint.joint_response(t, fx.harmonic_error(phi, 2, 1.0, 0.0), k, j, 0.05)
         amplitudes.append(np.max(np.abs(theta[len(t) // 2:])))
     assert speeds[int(np.argmax(amplitudes))] == pytest.approx(450.0, abs=10.0)
 

@@ -125,7 +125,7 @@ def test_third_harmonic_is_reported_unexplained():
 
 JSON_KEYS = {"kind", "model", "disagreements", "missing_effects", "rmse_before", "rmse_after",
              "measurement_effects", "nuisances", "equivalent_readings", "noise_rms", "outliers",
-             "steps", "unexplained"}
+             "steps", "unexplained", "notes"}
 
 
 def _finite(x) -> bool:

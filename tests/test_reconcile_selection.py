@@ -6,20 +6,16 @@ contract only: a weighted sum of relays (Mayergoyz 1986) whose output adds to th
 twist, so the loop carries its own slip compliance. Friction in parallel (Bouc–Wen) plus a
 spring of compliance z_sat/T_s is term for term that series element; reconcile fits the pair
 with a spring equal to the loop's z_sat/T_s (to 2 %, seed 7), so both readings are reported.
-The Bouc–Wen + housing pair of suite B (``truths/truth_b.py``) has a spring of its own: no
-series reading.
+The Bouc–Wen + housing pair of suite B (``truths/truth_b.py``, the session's shared sample
+``truth_runs``) has a spring of its own: no series reading.
 """
 
 from __future__ import annotations
 
-import sys
-from pathlib import Path
-
 import pytest
+from truth_runs import bench, case_run, suite_cases, suite_path
 
 from hdcad.reconcile.search import Candidate, Gate, _unless_ambiguous, ambiguous_second
-
-ROOT = Path(__file__).resolve().parents[1]
 
 
 def _cand(effects, dbic, passes=True):
@@ -50,13 +46,10 @@ def test_a_clearly_better_second_or_a_failing_rival_keeps_the_pair():
     assert _unless_ambiguous(best, [best, rival]) is best
 
 
-def _cases(suite: str, category: str, word: str, seed: int = 7):
-    sys.path.insert(0, str(ROOT / "benchmarks"))
-    import bench_truth_suites as bench
-    cases = bench.load_suite(ROOT / "truths" / f"truth_{suite}.py").generate_cases(
-        seed, bench.CATALOG_DIR, 2)
-    return bench, [c for c in cases if c.kind == "torsion" and c.category == category
-                   and word in c.name]
+def _preisach_cases():
+    """Suite C's Preisach singles at seed 7, 2 per cell (the shared sample has one)."""
+    return [c for c in suite_cases(suite_path("c"), 7, 2)
+            if c.kind == "torsion" and c.category == "single" and "preisach" in c.name]
 
 
 def _series_reading(result) -> bool:
@@ -65,7 +58,7 @@ def _series_reading(result) -> bool:
 
 @pytest.mark.parametrize("index", [0, 1])
 def test_preisach_loop_is_reported_with_its_series_slip_reading(index):
-    bench, cases = _cases("c", "single", "preisach")
+    cases = _preisach_cases()
     assert len(cases) == 2
     result = bench.reconcile_case(cases[index])
     assert result["missing_effects"][0] == "hysteresis"
@@ -75,7 +68,6 @@ def test_preisach_loop_is_reported_with_its_series_slip_reading(index):
 
 
 def test_a_housing_spring_of_its_own_gets_no_series_reading():
-    bench, cases = _cases("b", "pair", "hysteresis+housing_compliance")
-    result = bench.reconcile_case(cases[0])
+    _, result = case_run("b", "b-torsion-pair-hysteresis+housing_compliance-boucwen1-000")
     assert set(result["missing_effects"]) == {"hysteresis", "housing_compliance"}
     assert not _series_reading(result)

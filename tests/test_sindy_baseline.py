@@ -5,23 +5,17 @@ effect and names nothing on clean data. The comparison itself is printed by
 
 from __future__ import annotations
 
-import sys
-from pathlib import Path
-
 import pytest
 
 pytest.importorskip("pysindy")
-ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT / "benchmarks"))
 
-import bench_truth_suites as bench  # noqa: E402
+from truth_runs import suite_cases, suite_path  # noqa: E402 (puts benchmarks/ on the path)
 from sindy_baseline import sindy_case  # noqa: E402
 
 
 @pytest.fixture(scope="module")
 def cases():
-    return bench.load_suite(ROOT / "truths" / "truth_b.py").generate_cases(11, bench.CATALOG_DIR,
-                                                                          1)
+    return suite_cases(suite_path("b"))  # the session's shared sample (seed 11, 1 per cell)
 
 
 def test_strong_transmission_error_is_named(cases):

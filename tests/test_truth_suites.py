@@ -13,29 +13,16 @@ data-equivalent decoys with both readings: floor 60 %).
 from __future__ import annotations
 
 import statistics
-import sys
-from concurrent.futures import ProcessPoolExecutor
-from pathlib import Path
 
 import pytest
 
-ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT / "benchmarks"))
-
-import bench_truth_suites as bench  # noqa: E402
-
-SUITES = sorted((ROOT / "truths").glob("truth_*.py"))
-SEED, PER_CELL = 11, 1
+from truth_runs import SUITES, bench, suite_runs
 
 
 @pytest.fixture(scope="module", params=SUITES, ids=[p.stem for p in SUITES])
 def scored(request):
-    path = request.param
-    cases = bench.load_suite(path).generate_cases(SEED, bench.CATALOG_DIR, PER_CELL)
-    jobs = [(str(path), SEED, PER_CELL, i) for i in range(len(cases))]
-    with ProcessPoolExecutor(2) as pool:
-        results = dict(pool.map(bench._run, jobs, chunksize=4))
-    return [bench.score(cases[i], results[i]) for i in range(len(cases))]
+    cases, results = suite_runs(request.param)
+    return [bench.score(case, result) for case, result in zip(cases, results)]
 
 
 def share(rows, key):

@@ -8,6 +8,7 @@ Works for any family whose parts carry ``Neighbour`` records with bodies.
 from __future__ import annotations
 
 import itertools
+import weakref
 from dataclasses import dataclass
 
 import cadquery as cq
@@ -54,11 +55,22 @@ def reach(bodies: list[Body]) -> float:
     included: a square flange reaches half its diagonal)."""
     import math
     return max(math.hypot(max(abs(b.xmin), abs(b.xmax)), max(abs(b.ymin), abs(b.ymax)))
-               for b in (body.solid.BoundingBox() for body in bodies))
+               for b in (_box(body.solid) for body in bodies))
+
+
+# bounding boxes by shape: every pair test needs both, and an optimal box costs milliseconds
+_BOXES: "weakref.WeakKeyDictionary[cq.Shape, cq.BoundBox]" = weakref.WeakKeyDictionary()
+
+
+def _box(shape: cq.Shape) -> cq.BoundBox:
+    box = _BOXES.get(shape)
+    if box is None:
+        box = _BOXES[shape] = shape.BoundingBox()
+    return box
 
 
 def _boxes_meet(a: cq.Shape, b: cq.Shape) -> bool:
-    ba, bb = a.BoundingBox(), b.BoundingBox()
+    ba, bb = _box(a), _box(b)
     return (ba.xmin <= bb.xmax and bb.xmin <= ba.xmax and ba.ymin <= bb.ymax
             and bb.ymin <= ba.ymax and ba.zmin <= bb.zmax and bb.zmin <= ba.zmax)
 
@@ -86,7 +98,7 @@ def _touching(probe: cq.Shape, bodies: list[Body], skip: Body) -> list[str]:
 
 def _axis_frame(body: Body) -> tuple[float, float]:
     """(z_min, z_max) of a body on the assembly axis."""
-    box = body.solid.BoundingBox()
+    box = _box(body.solid)
     return box.zmin, box.zmax
 
 

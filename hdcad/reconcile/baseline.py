@@ -60,6 +60,7 @@ class Baseline:
     notes: list[str] = field(default_factory=list)
     inputs: dict[str, np.ndarray] = field(default_factory=dict)
     curve: StiffnessCurve | None = None
+    spring: StiffnessCurve | None = None  # vibration: the joint's catalog curve
 
     def free_columns(self, theta: dict[str, float], rows=slice(None)) -> np.ndarray:
         """The free columns on ``rows`` with the nuisance shape ``theta`` (torsion: the catalog
@@ -139,15 +140,32 @@ def catalog_twist(curve: StiffnessCurve, torque_Nm: np.ndarray, width_Nm: float
     t = np.abs(np.asarray(torque_Nm, dtype=float))
     theta = t / curve.K1
     w = max(float(width_Nm), 1e-9)
+    for corner, jump in _steps(curve):
+        theta = theta + jump * w * (np.logaddexp(0.0, (t - corner) / w)
+                                    - np.logaddexp(0.0, -corner / w))
+    return np.sign(torque_Nm) * theta
+
+
+def catalog_compliance(curve: StiffnessCurve, torque_Nm: np.ndarray, width_Nm: float
+                       ) -> np.ndarray:
+    """dθ/dT [rad/(N·m)] of :func:`catalog_twist`: 1/K1, stepping to 1/K2 at T1 and to 1/K3
+    at T2 by logistics of width w (even in T)."""
+    t = np.abs(np.asarray(torque_Nm, dtype=float))
+    out = np.full_like(t, 1.0 / curve.K1)
+    w = max(float(width_Nm), 1e-9)
+    for corner, jump in _steps(curve):
+        out = out + jump * 0.5 * (1.0 + np.tanh((t - corner) / (2.0 * w)))
+    return out
+
+
+def _steps(curve: StiffnessCurve) -> list[tuple[float, float]]:
+    """(corner torque [N·m], compliance step [rad/(N·m)]) of the curve's segments."""
     steps = []
     if curve.T1 is not None and not math.isinf(curve.T1) and curve.K2 is not None:
         steps.append((curve.T1, 1.0 / curve.K2 - 1.0 / curve.K1))
         if curve.T2 is not None and curve.K3 is not None:
             steps.append((curve.T2, 1.0 / curve.K3 - 1.0 / curve.K2))
-    for corner, jump in steps:
-        theta = theta + jump * w * (np.logaddexp(0.0, (t - corner) / w)
-                                    - np.logaddexp(0.0, -corner / w))
-    return np.sign(torque_Nm) * theta
+    return steps
 
 
 def _curve_notes(curve: StiffnessCurve) -> list[str]:
@@ -225,9 +243,10 @@ def vibration(data: dict, model: GearModel, catalog: Catalog,
               load_inertia_kgm2: float | None) -> Baseline:
     """Load vibration [rad] with no excitation: zero, plus a zero offset.
 
-    The gear's spring K (catalog K1: the load is an inertia only, so the torque stays low) and
-    the load inertia J define the resonance f_n = √(K/J)/2π (formula 021-3) the transmission
-    error effects excite.
+    The gear's spring K (catalog K1 while the twist stays below T1/K1) and the load inertia J
+    define the resonance f_n = √(K/J)/2π (formula 021-3) the transmission error effects
+    excite; a resonance that twists the gear past T1/K1 runs on the catalog's three-segment
+    curve instead (``spring``, :mod:`.joint`).
     """
     if load_inertia_kgm2 is None:
         raise InputError("--load-inertia", "vibration needs the load inertia [kg·m²]")
@@ -246,7 +265,8 @@ def vibration(data: dict, model: GearModel, catalog: Catalog,
     return Baseline("vibration", data["output_vibration_rad"], np.zeros_like(t),
                     _offset(len(t)), ("offset",), ("rad",), "rad", figures, notes,
                     {"time_s": t, "input_speed_rpm": speed, "wg_angle_rad": wg,
-                     "K_Nm_per_rad": np.array(curve.K1), "J_kgm2": np.array(load_inertia_kgm2)})
+                     "K_Nm_per_rad": np.array(curve.K1), "J_kgm2": np.array(load_inertia_kgm2)},
+                    spring=curve)
 
 
 def build(kind: str, data: dict, model: GearModel, catalog: Catalog,

@@ -34,7 +34,6 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy import signal
 
 # Reference lubricant temperature of the efficiency model: the seed's efficiency example
 # (000 p.023, CSF-20-80) is at 20 °C; η0 is the efficiency there.
@@ -210,78 +209,6 @@ def harmonic_error(wg_angle_rad: np.ndarray, order: int, amplitude_rad: float,
     return amplitude_rad * np.sin(order * wg_angle_rad + phase_rad)
 
 
-def joint_response(time_s: np.ndarray, excitation_rad: np.ndarray, K_Nm_per_rad: float,
-                   J_kgm2: float, zeta: float) -> np.ndarray:
-    """Load angle θ [rad] of J·θ'' + c·θ' + K·θ = K·e(t), c = 2ζ·√(K·J).
-
-    The load starts at rest in static equilibrium, θ(0) = e(0), θ'(0) = 0 (a run-up from
-    standstill). Exact discretisation of the linear joint with e(t) linear between samples
-    (first-order hold): a fixed IIR filter when the samples are evenly spaced
-    (:func:`joint_filter`), the same modal recursion step by step otherwise. 0 ≤ ζ < 1.
-    """
-    wn = math.sqrt(K_Nm_per_rad / J_kgm2)
-    dt = np.diff(time_s)
-    if dt.size and np.ptp(dt) <= 1e-6 * dt.mean():
-        b, a = joint_filter(wn, zeta, float(dt.mean()))
-        zi = signal.lfilter_zi(b, a) * excitation_rad[0]  # steady state of a constant input
-        return signal.lfilter(b, a, excitation_rad, zi=zi)[0]
-    return _joint_uneven(dt, np.asarray(excitation_rad, dtype=float), wn, zeta)
-
-
-def _modes(wn: float, zeta: float):
-    """Eigenvalues λ, eigenvectors V (columns [1, λ]) and V⁻¹ of the joint's state matrix."""
-    wd = wn * math.sqrt(1.0 - zeta * zeta)
-    lam = np.array([-zeta * wn + 1j * wd, -zeta * wn - 1j * wd])
-    V = np.array([[1.0, 1.0], lam])
-    return lam, V, np.linalg.inv(V)
-
-
-def _joint_uneven(dt: np.ndarray, e: np.ndarray, wn: float, zeta: float) -> np.ndarray:
-    """Modal first-order-hold recursion with a step of its own per sample interval."""
-    lam, V, Vinv = _modes(wn, zeta)
-    beta = (Vinv @ np.array([0.0, wn * wn]))[0]          # first mode; the second is its conjugate
-    lam0 = lam[0]
-    a = np.exp(lam0 * dt)
-    g0 = (a - 1.0) / lam0
-    g1 = (a - 1.0 - lam0 * dt) / (lam0 * lam0 * dt)
-    b_now, b_next = (g0 - g1) * beta, g1 * beta
-    q = (Vinv @ np.array([e[0], 0.0]))[0]               # static equilibrium θ = e, θ' = 0
-    out = np.empty(len(e))
-    out[0] = 2.0 * q.real
-    for k in range(len(dt)):
-        q = a[k] * q + b_now[k] * e[k] + b_next[k] * e[k + 1]
-        out[k + 1] = 2.0 * q.real                         # θ = q + conj(q)
-    return out
-
-
-def joint_filter(wn: float, zeta: float, dt: float) -> tuple[np.ndarray, np.ndarray]:
-    """IIR coefficients (b, a) of θ'' + 2ζω·θ' + ω²·θ = ω²·e sampled every dt [s], e linear
-    between samples (first-order hold), 0 ≤ ζ < 1.
-
-    Modal form: A = V·Λ·V⁻¹ with λ = −ζω ± iω√(1 − ζ²); x[k+1] = Φ·x[k] + (M0 − M1)·e[k] +
-    M1·e[k+1] with Φ = e^(AΔ), M0 = ∫₀^Δ e^(Aτ)dτ·B, M1 = ∫₀^Δ e^(A(Δ−s))·s/Δ ds·B, all
-    diagonal in the modes (closed form, no matrix exponential).
-    """
-    lam, V, Vinv = _modes(wn, zeta)
-    B = np.array([0.0, wn * wn])
-    e = np.exp(lam * dt)
-    modal = lambda d: (V @ np.diag(d) @ Vinv).real
-    phi = modal(e)
-    m0 = modal((e - 1.0) / lam) @ B
-    m1 = modal((e - 1.0 - lam * dt) / (lam * lam * dt)) @ B
-    # ξ = x − M1·e removes the e[k+1] term: ξ[k+1] = Φξ[k] + (ΦM1 + M0 − M1)e[k],
-    # θ[k] = ξ₀[k] + M1₀·e[k]
-    bd = phi @ m1 + m0 - m1
-    a = np.array([1.0, -np.trace(phi), np.linalg.det(phi)])
-    # C·adj(zI − Φ)·bd/det + D with C = [1, 0], D = M1₀: first row of the adjugate is
-    # [z − Φ₁₁, Φ₀₁]
-    n1 = bd[0]
-    n2 = phi[0, 1] * bd[1] - phi[1, 1] * bd[0]
-    d0 = m1[0]
-    b = np.array([d0, n1 + d0 * a[1], n2 + d0 * a[2]])
-    return b, a
-
-
 def low_load_factor(alpha: np.ndarray, c: float, q: float, speed_rpm: np.ndarray | None = None,
                     s: float = 0.0) -> np.ndarray:
     """Efficiency correction Ke(α) [-] for α = T/Tr < 1; Ke = 1 for α ≥ 1.
@@ -298,37 +225,63 @@ def low_load_factor(alpha: np.ndarray, c: float, q: float, speed_rpm: np.ndarray
     return (a * (1.0 + c) / (a + c)) ** q
 
 
+# Viscosity–temperature laws ν ∝ exp(B/(t + C)) by their constant C [°C]: Reynolds'
+# exponential (C → ∞), Andrade's (absolute temperature, C = 273.15) and Vogel's with
+# Cameron's C = 95 °C for mineral oils; the most curved law commonly used for lubricants.
+VISCOSITY_LAWS_C = {"Reynolds": math.inf, "Andrade": 273.15, "Vogel-Cameron": 95.0}
+
+
+def viscosity_ratio(temperature_C: np.ndarray, slope_per_K: float, reference_C: float,
+                    law_C: float = math.inf) -> np.ndarray:
+    """ν(t)/ν(t_ref) [-] of the law ν ∝ exp(B/(t + C)) with slope −b = d ln ν/dt at t_ref:
+    g = exp(−b·Δt/(1 + Δt/(t_ref + C))), Δt = t − t_ref (C → ∞: Reynolds' exp(−b·Δt)).
+
+    References: Reynolds, O. (1886) Phil. Trans. R. Soc. 177; Andrade, E. N. da C. (1930)
+    Nature 125, 309; Vogel, H. (1921) Phys. Z. 22, 645; Cameron, A. (1966) The Principles
+    of Lubrication (C = 95 °C for mineral oils).
+    """
+    dt = np.asarray(temperature_C, dtype=float) - reference_C
+    if math.isinf(law_C):
+        return np.exp(-slope_per_K * dt)
+    return np.exp(-slope_per_K * dt / (1.0 + dt / (reference_C + law_C)))
+
+
 def temperature_factor(temperature_C: np.ndarray, share: float, slope_per_K: float,
                        reference_C: float, speed_rpm: np.ndarray | None = None,
-                       s: float = 0.0, boundary: float = 0.0) -> np.ndarray:
+                       s: float = 0.0, boundary: float = 0.0,
+                       law_C: float = math.inf, speed_loss: float = 0.0) -> np.ndarray:
     """Efficiency relative to that at ``reference_C`` [-] when part of the loss is viscous.
 
-    F = 1 / (1 + a·(g − 1)·v + c·(1/g − 1)/v), g = e^(−b·(t − t_ref)) the viscosity
-    relative to t_ref (Reynolds' viscosity law), v = (n/n_ref)^s: the churning loss falls
+    F = 1 / (1 + a·(g − 1)·v + c·(1/g − 1)/v), g the viscosity relative to t_ref
+    (:func:`viscosity_ratio`, law constant ``law_C``), v = (n/n_ref)^s: the churning loss falls
     with the viscosity, so a warmer gear is more efficient for a > 0; a is the viscous loss as
     a share of the input power at t_ref and ``KE_REFERENCE_SPEED_RPM``, b the viscosity's
     temperature coefficient, s how the viscous share grows with input speed (viscous drag goes
     with viscosity × speed, Petroff/Hersey; s = 0 a speed-free law); c (``boundary``) the
     share of boundary friction that grows as the film (viscosity × speed) thins, so that
-    efficiency can peak at a middle temperature (Stribeck). F = 1 at t_ref at every speed.
+    efficiency can peak at a middle temperature (Stribeck). F = 1 at t_ref at every speed,
+    unless the viscous loss at t_ref grows with speed too: + u·(v − 1), u = ``speed_loss``
+    (the law's two references, temperature and speed, then meet at one point only).
     Seed 000 p.023 lists temperature and input speed among the factors of efficiency.
 
     References: Stribeck, R. (1902) Z. VDI 46; Hersey, M. D. (1914) J. Wash. Acad. Sci. 4.
     """
-    t = np.asarray(temperature_C, dtype=float)
-    g = np.exp(-slope_per_K * (t - reference_C))          # viscosity / viscosity at t_ref
+    g = viscosity_ratio(temperature_C, slope_per_K, reference_C, law_C)
     speed = 1.0
     if speed_rpm is not None and s != 0.0:
         speed = (np.asarray(speed_rpm, dtype=float) / KE_REFERENCE_SPEED_RPM) ** s
     loss = share * (g - 1.0) * speed
     if boundary:  # a thinner film (ν·n lower) lets the asperities touch: Stribeck's rise
         loss = loss + boundary * (1.0 / g - 1.0) / speed
+    if speed_loss:  # the viscous loss at t_ref also grows with speed
+        loss = loss + speed_loss * (speed - 1.0)
     return 1.0 / (1.0 + loss)
 
 
 # --------------------------------------------------------------------------- library
 _TE_FORM = ("e(φ) = a·sin({k}·φ + p), φ = WG (input) angle; transmission: output = "
-            "input/R + e; vibration: J·θ'' + c·θ' + K·θ = K·e(t), c = 2ζ√(KJ)")
+            "input/R + e; vibration: J·θ'' + c·θ' + K·θ = K·e(t), c = 2ζ√(KJ), on the "
+            "catalog's three-segment curve T(θ − e) where the twist passes T1/K1")
 
 
 def _te(order: int, what: str) -> Effect:
@@ -421,8 +374,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
         description=("Efficiency changes with the lubricant temperature through the "
                      "viscosity of the grease or oil (seed 000 p.023 lists temperature among "
                      "the factors; its example is at 20 °C lubricant temperature)."),
-        form=("η = η0·Ke(α)/(1 + a·(g − 1)·v + c·(1/g − 1)/v), g = exp(−b·(t − 20 °C)), "
-              "v = (n/1000 r/min)^s"),
+        form=("η = η0·Ke(α)/(1 + a·(g − 1)·v + c·(1/g − 1)/v), g = ν(t)/ν(20 °C) = "
+              "exp(−b·Δt/(1 + Δt/(20 °C + C))), Δt = t − 20 °C, C of the viscosity law "
+              "(Reynolds ∞, Andrade 273.15 °C, Vogel–Cameron 95 °C), v = (n/1000 r/min)^s"),
         parameters=(
             Parameter("a", "-", "viscous loss / input power at 20 °C and 1000 r/min "
                       "(negative: efficiency falls as the gear warms)", -0.5, 0.9),

@@ -20,6 +20,7 @@ from scipy.optimize import least_squares, lsq_linear
 
 from . import baseline as baselines
 from . import effects as fx
+from . import joint
 from . import rig
 
 # Above this many rows the fit uses this many rows drawn at random (fixed seed; time order
@@ -37,7 +38,7 @@ FIGURE_KINDS = {"hysteresis_rad": ("torsion",), "backlash_rad": ("torsion",),
 SHARED = ("damping_ratio", "stiffness_scale")
 # Legendre order of the slowly varying TE amplitude and phase while effects are named (3 and
 # 4 fit modulated TE better but a flexible TE also takes what a second effect explains);
-# once named, the order is chosen by BIC up to TE_ORDER_MAX (:func:`.search.refine_te_order`)
+# once named, the order is chosen by BIC up to TE_ORDER_MAX (:func:`.refine.refine_te_order`)
 TE_ORDER = 2
 TE_ORDER_MAX = 24
 
@@ -70,6 +71,16 @@ class Problem:
     # friction in parallel with it (−z_sat·z): the reading a hysteresis + spring pair is
     # tested against
     hysteresis_series: bool = False
+    # hysteresis as a friction torque in parallel with the gear's spring, its twist the torque
+    # times the curve's local compliance (the loop narrows where the gear stiffens); the
+    # constant-compliance form names the effect, this one is tried once it is named
+    hysteresis_through_gear: bool = False
+    # constant C [°C] of the viscosity–temperature law (effects.VISCOSITY_LAWS_C): Reynolds'
+    # while effects are named, the law that fits best once they are (refine.refine_viscosity)
+    viscosity_C: float = math.inf
+    # share u of the viscous loss at t_ref that grows with speed: 0 while effects are named,
+    # fitted once they are (refine.refine_viscosity)
+    speed_loss: float = 0.0
     cache: dict = field(default_factory=dict)
 
     @property
@@ -129,6 +140,8 @@ def make_problem(kind: str, base: baselines.Baseline) -> Problem:
                           "RMSE on every row")
     notes = list(base.notes)
     problem = Problem(kind, base, _scales(base, notes), rows, np.zeros(0), notes)
+    if kind == "vibration":  # the response to a steady error names the effects
+        problem.te_order = 0
     problem.branches = branches
     set_rows(problem, rows)
     return problem
@@ -167,29 +180,34 @@ def parameters_of(name: str, kind: str) -> tuple[fx.Parameter, ...]:
 
 
 def _harmonic(problem: Problem, order: int, theta: dict, full: bool) -> np.ndarray:
-    """sin/cos of k·φ (transmission: times 1, u, u² of the record position, a slowly varying
-    amplitude and phase), or the joint's response to them (vibration)."""
+    """sin/cos of k·φ times the Legendre polynomials P0 … P_te_order of the record position
+    (a slowly varying amplitude and phase; :func:`te_basis`), or the linear joint's
+    response to them (vibration)."""
     zeta = theta.get("damping_ratio")
     scale = theta.get("stiffness_scale", 1.0)
-    key = (order, zeta, scale, full, problem.te_order)
-    if key not in problem.cache:
+    key = (order, zeta, scale, full)
+    width = 2 * (problem.te_order + 1)
+    # a lower Legendre order's columns are the first of a higher one's: kept once, sliced
+    if key not in problem.cache or problem.cache[key].shape[1] < width:
         inp = problem.base.inputs
-        phi = inp["wg_angle_rad"]
-        basis = [np.sin(order * phi), np.cos(order * phi)]
+        cols = np.column_stack(te_basis(problem, order))
         if zeta is not None:  # the joint's response needs the whole time history
             k = float(inp["K_Nm_per_rad"]) * scale
-            cols = np.column_stack([fx.joint_response(inp["time_s"], c, k,
-                                                      float(inp["J_kgm2"]), zeta)
-                                    for c in basis])
-        else:  # amplitude and phase as Legendre series in the record position
-            u = inp["record_position"]
-            cols = np.column_stack([c * p for p in _legendre(u, problem.te_order)
-                                    for c in basis])
+            cols = joint.joint_response(inp["time_s"], cols, k, float(inp["J_kgm2"]), zeta)
         cols = cols if full else cols[problem.rows]
         if len(problem.cache) > 64:
             problem.cache.clear()
         problem.cache[key] = cols
-    return problem.cache[key]
+    return problem.cache[key][:, :width]
+
+
+def te_basis(problem: Problem, order: int) -> list[np.ndarray]:
+    """The error's columns on every row: sin/cos of k·φ times P0 … P_te_order of the record
+    position (a slowly varying amplitude and phase), labelled as :func:`te_labels`."""
+    inp = problem.base.inputs
+    phi = inp["wg_angle_rad"]
+    return [c * p for p in _legendre(inp["record_position"], problem.te_order)
+            for c in (np.sin(order * phi), np.cos(order * phi))]
 
 
 def _legendre(u: np.ndarray, order: int) -> list[np.ndarray]:
@@ -237,6 +255,9 @@ def columns(problem: Problem, effects: tuple[str, ...], theta: dict[str, float],
                                     th["z0"], th["first_scale"])
             if problem.hysteresis_series:
                 z = z - inp["torque_Nm"] / th["T_s"]
+            elif problem.hysteresis_through_gear:  # friction torque × the gear's compliance
+                z = z * problem.base.curve.K1 * baselines.catalog_compliance(
+                    problem.base.curve, inp["torque_Nm"], theta.get("catalog.corner_width", 0.0))
             add(name, ["z_sat"], -z, 0.0)
         elif name == "backlash":
             add(name, ["lost_motion"], fx.backlash_twist(inp["torque_Nm"], 1.0, th["T_w"]), 0.0)
@@ -252,7 +273,8 @@ def columns(problem: Problem, effects: tuple[str, ...], theta: dict[str, float],
         elif name == "temperature_dependence":
             f = fx.temperature_factor(inp["temperature_C"], th["a"], th["b"],
                                       fx.REFERENCE_TEMPERATURE_C, inp["input_speed_rpm"],
-                                      th["s"], th["boundary"])
+                                      th["s"], th["boundary"], problem.viscosity_C,
+                                      problem.speed_loss)
             factor = f if factor is None else factor * f
     X = np.column_stack(cols)
     if factor is not None:  # η = η0·Ke(α)·F(t): the effects scale the whole efficiency

@@ -39,7 +39,7 @@ import numpy as np
 
 from . import effects as fx
 from . import rig
-from .fitting import TE_ORDER, TE_ORDER_MAX, Fit, Problem, finish, fit_model, nonlinear
+from .fitting import Fit, Problem, finish, fit_model, nonlinear
 from .noise import ar1_time, noise_model
 from .regions import directions
 
@@ -297,27 +297,3 @@ def recheck_rig(problem: Problem, final: Fit) -> Fit:
         if not gate(problem, fit, current, sigma, tau).passes():
             current = fit
     return current
-
-
-def refine_te_order(problem: Problem, fit: Fit) -> Fit:
-    """The named transmission errors with the Legendre order of their slowly varying
-    amplitude and phase chosen by BIC (effective sample size N/τ, τ from the most flexible
-    fit's residual), ``TE_ORDER`` … ``TE_ORDER_MAX``; leaves ``problem.te_order`` at it.
-
-    Effects are named at ``TE_ORDER`` (a flexible TE would take what a second effect
-    explains); once named, a modulated error (amplitude or phase varying over the record)
-    is followed as closely as the data support.
-    """
-    if problem.kind != "transmission" or not any(e.startswith("te_") for e in fit.effects):
-        return fit
-    shapes = len(nonlinear(problem.kind, fit.effects))
-    fits = {}
-    for order in range(TE_ORDER, TE_ORDER_MAX + 1):
-        problem.te_order = order
-        fits[order] = finish(problem, fit.effects, fit.theta, shapes)
-    _, phi = noise_model(fits[TE_ORDER_MAX].residual(problem))
-    n_eff = len(problem.rows) / ar1_time(phi)
-    best = min(fits, key=lambda o: n_eff * math.log(max(fits[o].rss, 1e-300))
-               + fits[o].n_params * math.log(n_eff))
-    problem.te_order = best
-    return fits[best]

@@ -26,7 +26,7 @@ from scipy.ndimage import median_filter
 from ..catalog import Catalog
 from ..models import GearModel
 from . import baseline as baselines
-from . import readings
+from . import readings, refine
 from . import regions as rg
 from . import search
 from . import units
@@ -89,7 +89,7 @@ class Reconciliation:
                 "measurement_effects": self.measurement_effects,
                 "nuisances": self.nuisances,
                 "equivalent_readings": self.equivalent_readings,
-                "noise_rms": self.noise_rms, "outliers": self.outliers}
+                "noise_rms": self.noise_rms, "outliers": self.outliers, "notes": self.notes}
 
 
 def _rmse(x: np.ndarray) -> float:
@@ -149,7 +149,7 @@ def reconcile(kind: str, data: dict, model: GearModel, catalog: Catalog,
     with_rig, rig_table, singles = search.select_rig(problem, start)
     best, candidates = search.select_gear(problem, with_rig, singles)
     final = search.recheck_rig(problem, best.fit if best else with_rig)
-    final = search.refine_te_order(problem, final)
+    final = refine.refine(problem, final)
     named = best.effects if best else ()
     resid0 = (base.y - start.prediction)
     residual = base.y - final.prediction
