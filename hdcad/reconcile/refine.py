@@ -47,12 +47,21 @@ def refine_te_order(problem: Problem, fit: Fit) -> Fit:
     for order in [TE_ORDER_MAX, *range(problem.te_order, TE_ORDER_MAX)]:
         problem.te_order = order
         fits[order] = finish(problem, fit.effects, fit.theta, shapes)
-    _, phi = noise_model(fits[TE_ORDER_MAX].residual(problem))
-    n_eff = len(problem.rows) / ar1_time(phi)
-    best = min(fits, key=lambda o: n_eff * math.log(max(fits[o].rss, 1e-300))
-               + fits[o].n_params * math.log(n_eff))
+    best = _bic_best({o: (f.rss, f.n_params) for o, f in fits.items()},
+                     _effective_n(problem, fits[TE_ORDER_MAX].residual(problem)))
     problem.te_order = best
     return fits[best]
+
+
+def _effective_n(problem: Problem, residual: np.ndarray) -> float:
+    """N/τ of the fitted rows, τ from the AR(1) noise of ``residual``."""
+    return len(problem.rows) / ar1_time(noise_model(residual)[1])
+
+
+def _bic_best(fits: dict, n_eff: float):
+    """The key of ``fits`` ({key: (rss, parameters)}) with the lowest BIC at n_eff."""
+    return min(fits, key=lambda k: n_eff * math.log(max(fits[k][0], 1e-300))
+               + fits[k][1] * math.log(n_eff))
 
 
 class CurveFit(Fit):
@@ -134,9 +143,8 @@ def _speed_loss(problem: Problem, fit: Fit) -> Fit:
     found = minimize_scalar(lambda u: trial(u).rss, bounds=(lo, hi), method="bounded",
                             options={"xatol": 1e-3, "maxiter": 20})
     wider = trial(found.x)
-    _, phi = noise_model(wider.residual(problem))
-    n_eff = len(problem.rows) / ar1_time(phi)
-    if n_eff * math.log(fit.rss / max(wider.rss, 1e-300)) <= math.log(n_eff):
+    n_eff = _effective_n(problem, wider.residual(problem))
+    if _bic_best({False: (fit.rss, 0), True: (wider.rss, 1)}, n_eff) is False:
         problem.speed_loss = 0.0
         return fit
     problem.notes.append(f"temperature law: the viscous loss at {fx.REFERENCE_TEMPERATURE_C:g} "
@@ -166,9 +174,7 @@ def refine_spring(problem: Problem, fit: Fit) -> Fit:
     model = _CurveModel(problem, fit, te, float(step.mean()))
     if model.linear_twist <= model.theta1(fit.theta["stiffness_scale"]):
         return fit  # the joint stays on the curve's first segment: it is the linear one
-    # from the linear joint's stiffness (which a stiffening joint pulls up) and from the
-    # catalog's: the resonance's place is a local minimum of each
-    # a few steps from each start, then the best one on to convergence
+    # a few steps from each start (model.starts), then the best one on to convergence
     result = min((model.solve(x0, _SCREEN_EVALUATIONS) for x0 in model.starts(fit)),
                  key=lambda r: r.cost)
     result = model.solve(result.x)
@@ -200,10 +206,8 @@ def _curve_order(problem: Problem, model: "_CurveModel", x: np.ndarray) -> Fit:
         delta = np.linalg.lstsq(D, r, rcond=None)[0]
         rr = r - D @ delta
         fits[order] = (float(rr @ rr), D.shape[1] + 2)
-    _, phi = noise_model(rr)  # the most flexible order's residual, as for the linear joint
-    n_eff = len(problem.rows) / ar1_time(phi)
-    best = min(fits, key=lambda o: n_eff * math.log(max(fits[o][0], 1e-300))
-               + fits[o][1] * math.log(n_eff))
+    # τ from the most flexible order's residual, as for the linear joint
+    best = _bic_best(fits, _effective_n(problem, rr))
     problem.te_order = best
     shapes = len(nonlinear(problem.kind, model.fit.effects))
     linear = finish(problem, model.fit.effects, model.theta_at(x), shapes)
