@@ -1,4 +1,6 @@
 import os
+import shutil
+import uuid
 
 # One BLAS thread per process: the suite's process pools already fill the cores, and the
 # fits' matrices are small (threads oversubscribe the CPU and slow them down).
@@ -33,3 +35,18 @@ def example_duty_path():
 
 def duty_dict():
     return yaml.safe_load((examples_dir() / "duty_seed_example.yaml").read_text(encoding="utf-8"))
+
+
+
+def pytest_configure(config):
+    """Under ``pytest -n``, a run id known to the controller, so that it can remove the
+    folder in which the workers share the truth suites' sample (``truth_runs``)."""
+    if not hasattr(config, "workerinput") and getattr(config.option, "numprocesses", None):
+        config.option.testrunuid = config.option.testrunuid or uuid.uuid4().hex
+
+
+def pytest_sessionfinish(session):
+    run = getattr(session.config.option, "testrunuid", None)
+    if run and not hasattr(session.config, "workerinput"):
+        from truth_runs import shared_folder
+        shutil.rmtree(shared_folder(run), ignore_errors=True)

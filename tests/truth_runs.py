@@ -1,11 +1,16 @@
 """The truth suites' sample (``truths/truth_*.py``, 1 case per cell, seed 11) reconciled once
 per test session and shared by the tests that read it (``bench_truth_suites`` runs and
-scores the same cases)."""
+scores the same cases). Under ``pytest -n`` the workers share it through a file per suite
+(the first to need a suite reconciles it while the others wait for the file)."""
 
 from __future__ import annotations
 
+import fcntl
 import functools
+import os
+import pickle
 import sys
+import tempfile
 from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
 
@@ -31,6 +36,28 @@ def suite_path(suite: str) -> Path:
 @functools.lru_cache(maxsize=None)
 def suite_runs(path: Path) -> tuple[list, list[dict]]:
     """(cases, reconcile results) of the suite at ``path``, in the suite's order."""
+    run = os.environ.get("PYTEST_XDIST_TESTRUNUID")
+    if not run:
+        return _reconcile_suite(path)
+    folder = shared_folder(run)
+    folder.mkdir(exist_ok=True)
+    stored = folder / f"{path.stem}.pickle"
+    with open(folder / f"{path.stem}.lock", "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)  # held while one worker reconciles the suite
+        if not stored.exists():
+            staged = stored.with_suffix(".partial")
+            staged.write_bytes(pickle.dumps(_reconcile_suite(path)))
+            staged.replace(stored)
+    bench.load_suite(path)  # the cases' classes live in the suite's module
+    return pickle.loads(stored.read_bytes())
+
+
+def shared_folder(run: str) -> Path:
+    """Where the workers of the test run ``run`` share the reconciled samples."""
+    return Path(tempfile.gettempdir()) / f"hdcad-truth-sample-{run}"
+
+
+def _reconcile_suite(path: Path) -> tuple[list, list[dict]]:
     cases = suite_cases(path)
     jobs = list(enumerate(cases))
     with ProcessPoolExecutor(2) as pool:
