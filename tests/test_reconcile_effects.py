@@ -19,7 +19,7 @@ from hdcad.reconcile import EFFECT_NAMES, EFFECTS, KINDS
 from hdcad.reconcile import effects as fx
 from hdcad.reconcile import joint
 from hdcad.reconcile.baseline import catalog_twist
-from hdcad.reconcile.noise import correlation_time, noise_rms
+from hdcad.reconcile.noise import correlation_time, noise_model, noise_rms
 
 
 def triangle(t0: float, cycles: int, rows: int) -> np.ndarray:
@@ -240,6 +240,28 @@ def test_noise_estimate_ignores_a_smooth_signal_and_sees_coloured_noise():
     assert noise_rms(signal + ar) == pytest.approx(sigma, rel=0.12)
     # AR(1): τ = (1 + φ)/(1 − φ) = 9 samples
     assert correlation_time(ar) == pytest.approx(9.0, rel=0.35)
+
+
+def test_a_short_series_does_not_read_more_noise_than_it_holds():
+    """72 samples of AR(1) noise (φ = 0.71, τ = 5.9: an efficiency grid in time order) leave
+    only lags 1, 2, 4 to the fit, and φ loose: unchecked, a third of the draws read φ > 0.9
+    and σ up to 2.6× the truth (p90), which took an efficiency effect's evidence from 72
+    rows down to N/τ ≈ 2. The noise cannot hold more variance than the series: p90 of σ
+    ≤ 1.2× and at most 5 % of the draws with φ > 0.9 (200 draws, fixed seed)."""
+    rng = np.random.default_rng(1)
+    phi_true, n = 0.71, 72
+    sigmas, phis = [], []
+    for _ in range(200):
+        e = np.empty(n)
+        e[0] = rng.standard_normal()
+        for i in range(1, n):
+            e[i] = phi_true * e[i - 1] + math.sqrt(1 - phi_true ** 2) * rng.standard_normal()
+        sigma, phi = noise_model(e)
+        sigmas.append(sigma)
+        phis.append(phi)
+    assert np.percentile(sigmas, 90) <= 1.2
+    assert np.mean(np.array(phis) > 0.9) <= 0.05
+    assert 0.5 <= np.median(phis) / phi_true <= 1.1
 
 
 # --------------------------------------------------------------------------- baseline

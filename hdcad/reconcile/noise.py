@@ -65,30 +65,48 @@ def noise_model(y: np.ndarray) -> tuple[float, float]:
     """(σ [unit of y], φ [-]) of AR(1) noise fitted to the lagged fourth differences.
 
     s_h² = σ²·v(h, φ)/70 with v the variance of the fourth difference of AR(1) noise
-    (:func:`_fourth_difference_variance`), fitted in log s over the shortest lags 1, 2, 4, 8, 16
-    (where a smooth signal contributes least); the longest lag is dropped (twice at most) while it lies more
-    than ``CURVATURE_GROWTH`` − 1 above the fit (signal, not noise). White noise has φ = 0.
+    (:func:`_fourth_difference_variance`), fitted in log s over the shortest lags 1, 2, 4, 8,
+    16 (where a smooth signal contributes least); the longest lag is dropped (twice at most)
+    while it lies more than ``CURVATURE_GROWTH`` − 1 above the fit (signal, not noise). White noise has φ = 0.
+
+    The noise cannot hold more variance than the series it is read from: when the fit
+    extrapolates σ above the RMS of ``y`` (a short series whose few lags leave φ loose, read
+    as near 1), σ is held at that RMS and φ fitted again with it.
     """
     estimates = [(h, s) for h, s in lag_estimates(y, 16) if s > 0]
     if len(estimates) < 2:
         return float(np.std(y)), 0.0
-    grid = np.linspace(0.0, 0.95, 96)
     for _ in range(3):
         hs = np.array([h for h, _ in estimates])
         logs = np.log([s for _, s in estimates])
-        best = None
-        for phi in grid:
-            shape = 0.5 * np.log([_fourth_difference_variance(int(h), phi) / 70.0 for h in hs])
-            level = float(np.mean(logs - shape))
-            err = float(np.sum((logs - shape - level) ** 2))
-            if best is None or err < best[0]:
-                best = (err, phi, level, shape)
-        _, phi, level, shape = best
+        _, phi, level, shape = _ar1_fit(hs, logs)
         if len(estimates) > 2 and logs[-1] - shape[-1] - level > math.log(CURVATURE_GROWTH):
             estimates = estimates[:-1]
             continue
         break
+    rms, n = float(np.std(y)), len(y)
+    if rms > 0 and level > _log_ceiling(rms, n, phi):
+        _, phi, level, _ = _ar1_fit(hs, logs, lambda p: _log_ceiling(rms, n, p))
     return float(math.exp(level)), float(phi)
+
+
+def _log_ceiling(rms: float, n: int, phi: float) -> float:
+    """log of the largest σ of AR(1) noise whose n samples have the RMS ``rms`` about their
+    mean: a sample's variance falls short of σ² by the variance of its mean, ≈ σ²·τ/n."""
+    return math.log(rms) - 0.5 * math.log(max(1.0 - ar1_time(phi) / n, 0.25))
+
+
+def _ar1_fit(hs: np.ndarray, logs: np.ndarray, level=None):
+    """(error, φ, log σ, shape) of the AR(1) fit in log s_h over a grid of φ; log σ fitted,
+    or given as a function of φ."""
+    best = None
+    for phi in np.linspace(0.0, 0.95, 96):
+        shape = 0.5 * np.log([_fourth_difference_variance(int(h), phi) / 70.0 for h in hs])
+        lv = float(np.mean(logs - shape)) if level is None else level(phi)
+        err = float(np.sum((logs - shape - lv) ** 2))
+        if best is None or err < best[0]:
+            best = (err, phi, lv, shape)
+    return best
 
 
 def noise_rms(y: np.ndarray) -> float:
