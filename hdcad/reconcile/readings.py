@@ -99,15 +99,15 @@ def nuisances(problem: Problem, fit: Fit) -> list[dict]:
 
 
 def series_slip(tied: bool) -> list[dict]:
-    """The other reading of a hysteresis + housing_compliance pair whose spring is the
-    loop's own slip compliance."""
+    """The other reading of a hysteresis named as one slip element in series: friction in
+    parallel plus a housing spring of the loop's own slip compliance."""
     if not tied:
         return []
-    return [{"alternative": ["hysteresis"], "reading": "series_slip",
-             "text": "the series spring equals the loop's own slip compliance z_sat/T_s: one "
-                     "slip element in series with the gear (Iwan, Preisach) reads the same as "
-                     "friction plus a housing spring; check the housing's stiffness before "
-                     "stiffening it"}]
+    return [{"alternative": ["hysteresis", "housing_compliance"], "reading": "series_slip",
+             "text": "the loop is read as one slip element in series with the gear (Iwan, "
+                     "Preisach): friction in parallel with the gear plus a housing spring of "
+                     "the loop's own slip compliance z_sat/T_s reads the same; check the "
+                     "housing's stiffness before stiffening it"}]
 
 
 def undecided(named: tuple[str, ...], rivals: tuple[str, ...]) -> list[dict]:

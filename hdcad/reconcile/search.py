@@ -18,8 +18,8 @@
 5. Readings: when another pair with the same first member comes within
    ``SECOND_AMBIGUITY`` of the best pair's ΔBIC, the second is not identified and only the
    first is named (:func:`ambiguous_second`); a hysteresis + housing spring pair whose
-   spring is the loop's own slip compliance is reported with its series-slip reading
-   (:func:`series_slip`).
+   spring is the loop's own slip compliance is named as one slip element in series, and
+   reported with the pair as its other reading (:func:`series_slip`).
 
 References
 ----------
@@ -209,8 +209,12 @@ def select_gear(problem: Problem, start: Fit, singles: dict[str, Fit] | None = N
     passing = [c for c in out if c.passes]
     best = max(passing, key=lambda c: c.gate.delta_bic) if passing else None
     best = _unless_ambiguous(best, passing)
-    if best is not None and series_slip(problem, start, best, sigma, tau):
-        best = replace(best, series_slip=True)
+    tied = series_slip(problem, start, best, sigma, tau) if best is not None else None
+    if tied is not None:  # the simpler reading is named: one slip element in series
+        problem.hysteresis_series = True
+        best = Candidate(("hysteresis",), tied, gate(problem, start, tied, sigma, tau), True,
+                         series_slip=True)
+        out = [best if c.effects == best.effects else c for c in out]
     return best, out
 
 
@@ -242,25 +246,27 @@ def _unless_ambiguous(best: Candidate | None, passing: list[Candidate]) -> Candi
 
 
 def series_slip(problem: Problem, start: Fit, best: Candidate, sigma: float, tau: float
-                ) -> bool:
-    """Whether a hysteresis + housing_compliance pair reads the same as one slip element in
-    series with the gear (its spring is the loop's own slip compliance).
+                ) -> Fit | None:
+    """The fit of one slip element in series with the gear when a hysteresis +
+    housing_compliance pair reads the same as it (its spring is the loop's own slip
+    compliance); else None.
 
     Friction in parallel with the gear (Bouc–Wen, −z_sat·z) plus a spring of compliance
     z_sat/T_s is, term for term, a slip element in series (z_sat·(T/T_s − z): Iwan,
     Preisach, Masing–Ramberg–Osgood loops add their slip to the gear's twist). At the pair's
     own shape the compliance is tied to z_sat/T_s; when BIC does not prefer the free spring
-    to the tie (ΔBIC ≤ 0) the data read the same both ways, and the report gives both.
+    to the tie (ΔBIC ≤ 0) the data read the same both ways: the simpler reading, one
+    hysteresis, is named and the report gives the other.
     """
     if set(best.effects) != {"hysteresis", "housing_compliance"}:
-        return False
+        return None
     effects = start.effects + ("hysteresis",)
     problem.hysteresis_series = True
     try:
         tied = finish(problem, effects, best.fit.theta, len(nonlinear(problem.kind, effects)))
     finally:
         problem.hysteresis_series = False
-    return gate(problem, tied, best.fit, sigma, tau).delta_bic <= 0.0
+    return tied if gate(problem, tied, best.fit, sigma, tau).delta_bic <= 0.0 else None
 
 
 def _pair_fit(problem: Problem, start: Fit, fa: Fit, fb: Fit) -> Fit:
