@@ -75,3 +75,15 @@ def test_a_housing_spring_of_its_own_gets_no_series_reading():
     _, result = case_run("b", "b-torsion-pair-hysteresis+housing_compliance-boucwen1-000")
     assert set(result["missing_effects"]) == {"hysteresis", "housing_compliance"}
     assert not _series_reading(result)
+
+
+def test_a_modulated_first_error_does_not_hide_a_second_harmonic():
+    """Suite C's AM + AM transmission pair (seed 7): at the naming order te_1x leaves its
+    own modulation (4σ), and te_2x explains too little of that to pass the share rule.
+    Against te_1x with its modulation followed (order by BIC) te_2x still earns its place:
+    both named, and the residual at the noise (1.2σ, the suites' acceptance bar)."""
+    case = next(c for c in suite_cases(suite_path("c"), 7, 2)
+                if c.name == "c-transmission-pair-te1xte2x-amam-000")
+    result = bench.reconcile_case(case)
+    assert result["missing_effects"] == ["te_1x", "te_2x"]
+    assert result["rmse_after"] <= 1.2 * case.noise_rms

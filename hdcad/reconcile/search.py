@@ -41,6 +41,7 @@ from . import effects as fx
 from . import rig
 from .fitting import Fit, Problem, finish, fit_model, nonlinear
 from .noise import ar1_time, noise_model
+from .refine import refine_te_order
 from .regions import directions
 
 BIC_MIN = 10.0
@@ -284,13 +285,37 @@ def _pair(problem: Problem, start: Fit, fa: Fit, fb: Fit, fit: Fit, sigma: float
     g = gate(problem, start, fit, sigma, tau)
     ok, reason = g.passes(), ""
     for member, other in ((a, fb), (b, fa)):
-        if not gate(problem, other, fit, sigma, tau).passes(second=True):
+        if not (gate(problem, other, fit, sigma, tau).passes(second=True)
+                or _beyond_modulation(problem, member, other, fit, sigma, tau)):
             ok, reason = False, f"{member} adds too little to {other.effects[-1]}"
         elif not has_evidence(problem, member, other, sigma, tau):
             ok, reason = False, f"no loop in the residual of {other.effects[-1]}"
     # the member that explains more alone is named first
     order = (a, b) if fa.rss <= fb.rss else (b, a)
     return Candidate(order, fit, g, ok, reason)
+
+
+def _beyond_modulation(problem: Problem, member: str, other: Fit, fit: Fit, sigma: float,
+                       tau: float) -> bool:
+    """Whether the transmission error ``member`` still earns its place once the other
+    error follows its own slow modulation (Legendre order chosen by BIC,
+    :func:`.refine.refine_te_order`). What a modulated error leaves at the naming order is
+    its own misfit, which the share rule would ask a second harmonic to explain; another
+    harmonic's carrier cannot take that misfit, so the pair, its order chosen the same way,
+    is tested against the modulated one by ΔBIC and explained variance (a blocked
+    cross-validation would judge the Legendre columns' extrapolation into the held-out
+    block, not the harmonic)."""
+    if not (member.startswith("te_") and other.effects[-1].startswith("te_")):
+        return False
+    saved = problem.te_order
+    try:
+        modulated = refine_te_order(problem, other)
+        problem.te_order = saved
+        pair = refine_te_order(problem, fit)
+    finally:
+        problem.te_order = saved
+    g = gate(problem, modulated, pair, sigma, tau)
+    return g.delta_bic > BIC_MIN and g.explained > EXPLAINED_MIN
 
 
 def recheck_rig(problem: Problem, final: Fit) -> Fit:
