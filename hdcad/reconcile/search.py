@@ -285,8 +285,9 @@ def _pair(problem: Problem, start: Fit, fa: Fit, fb: Fit, fit: Fit, sigma: float
     g = gate(problem, start, fit, sigma, tau)
     ok, reason = g.passes(), ""
     for member, other in ((a, fb), (b, fa)):
-        if not (gate(problem, other, fit, sigma, tau).passes(second=True)
-                or _beyond_modulation(problem, member, other, fit, sigma, tau)):
+        over = gate(problem, other, fit, sigma, tau)
+        if not (over.passes(second=True) or over.passes()
+                and _beyond_modulation(problem, member, other, fit, sigma, tau)):
             ok, reason = False, f"{member} adds too little to {other.effects[-1]}"
         elif not has_evidence(problem, member, other, sigma, tau):
             ok, reason = False, f"no loop in the residual of {other.effects[-1]}"
