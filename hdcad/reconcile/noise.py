@@ -67,7 +67,8 @@ def noise_model(y: np.ndarray) -> tuple[float, float]:
     s_h² = σ²·v(h, φ)/70 with v the variance of the fourth difference of AR(1) noise
     (:func:`_fourth_difference_variance`), fitted in log s over the shortest lags 1, 2, 4, 8,
     16 (where a smooth signal contributes least); the longest lag is dropped (twice at most)
-    while it lies more than ``CURVATURE_GROWTH`` − 1 above the fit (signal, not noise). White noise has φ = 0.
+    while it lies more than ``CURVATURE_GROWTH`` − 1 above the fit (signal, not noise).
+    White noise has φ = 0.
 
     The noise cannot hold more variance than the series it is read from: when the fit
     extrapolates σ above the RMS of ``y`` (a short series whose few lags leave φ loose, read
