@@ -37,7 +37,6 @@ def duty_dict():
     return yaml.safe_load((examples_dir() / "duty_seed_example.yaml").read_text(encoding="utf-8"))
 
 
-
 def pytest_configure(config):
     """Under ``pytest -n``, a run id known to the controller, so that it can remove the
     folder in which the workers share the truth suites' sample (``truth_runs``)."""

@@ -45,10 +45,13 @@ def suite_runs(path: Path) -> tuple[list, list[dict]]:
     with open(folder / f"{path.stem}.lock", "w") as lock:
         fcntl.flock(lock, fcntl.LOCK_EX)  # held while one worker reconciles the suite
         if not stored.exists():
+            runs = _reconcile_suite(path)
             staged = stored.with_suffix(".partial")
-            staged.write_bytes(pickle.dumps(_reconcile_suite(path)))
+            staged.write_bytes(pickle.dumps(runs))
             staged.replace(stored)
-    bench.load_suite(path)  # the cases' classes live in the suite's module
+            return runs
+    if path.stem not in sys.modules:  # the cases' classes live in the suite's module
+        bench.load_suite(path)
     return pickle.loads(stored.read_bytes())
 
 
