@@ -139,6 +139,19 @@ def test_housing_compliance_is_a_spring_in_series():
     np.testing.assert_allclose(total, t / (1 / (1 / k + 1 / k_h)), rtol=1e-12)
 
 
+def test_stiffening_spring_solves_its_cubic_and_is_linear_without_a_knee():
+    """θ = (1/k)·T_k·u with u + u³ = T/T_k (Cardano): the cubic's residual is at rounding
+    level, the low-torque compliance is 1/k, the secant stiffness at T = 10·T_k is
+    (1 + u²)·k = 5·k (u³ + u = 10 → u = 2), and T_k = ∞ is the linear spring."""
+    torque = np.linspace(-50.0, 50.0, 401)
+    knee = 5.0
+    u = fx.progressive_twist(torque, knee) / knee
+    assert np.max(np.abs(u + u ** 3 - torque / knee)) < 1e-12
+    assert fx.progressive_twist(np.array([1e-4]), knee)[0] == pytest.approx(1e-4, rel=1e-6)
+    assert 50.0 / fx.progressive_twist(np.array([50.0]), knee)[0] == pytest.approx(5.0)
+    assert np.array_equal(fx.progressive_twist(torque, math.inf), torque)
+
+
 def test_te_2x_has_period_pi_and_te_1x_period_two_pi():
     """Seed 000 p.021: the main error component repeats twice per WG revolution."""
     phi = np.linspace(0, 4 * math.pi, 1001)

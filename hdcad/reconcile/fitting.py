@@ -81,6 +81,9 @@ class Problem:
     # share u of the viscous loss at t_ref that grows with speed: 0 while effects are named,
     # fitted once they are (refine.refine_viscosity)
     speed_loss: float = 0.0
+    # knee torque T_k [N·m] of a housing spring that stiffens (effects.progressive_twist):
+    # ∞ (linear) while effects are named, fitted once they are (springs.stiffening)
+    housing_knee: float = math.inf
     cache: dict = field(default_factory=dict)
 
     @property
@@ -262,7 +265,8 @@ def columns(problem: Problem, effects: tuple[str, ...], theta: dict[str, float],
         elif name == "backlash":
             add(name, ["lost_motion"], fx.backlash_twist(inp["torque_Nm"], 1.0, th["T_w"]), 0.0)
         elif name == "housing_compliance":
-            add(name, ["compliance"], inp["torque_Nm"], 0.0)
+            add(name, ["compliance"], fx.progressive_twist(inp["torque_Nm"],
+                                                           problem.housing_knee), 0.0)
         elif name in ("te_1x", "te_2x"):
             block = _harmonic(problem, int(name[3]), theta, full)
             add(name, te_labels(problem.te_order)[:block.shape[1]], block)

@@ -65,6 +65,10 @@ def effect_params(problem: Problem, fit: Fit, effect: str) -> dict[str, dict]:
     elif effect == "housing_compliance":
         c = b["compliance"]
         out = {"K_h": (1.0 / c if c > 0 else math.inf, "N·m/rad"), "compliance": (c, "rad/(N·m)")}
+        knee = problem.housing_knee
+        if math.isfinite(knee) and c > 0:  # a spring that stiffens: K_h is its value at T = 0
+            u = float(fx.progressive_twist(np.array(problem.scales["T0"]), knee)) / knee
+            out.update({"T_k": (knee, "N·m"), "K_h_at_T0": ((1 + 3 * u * u) / c, "N·m/rad")})
     elif effect in ("te_1x", "te_2x"):
         out = _te(b, fit.theta)
     elif effect == "low_load_efficiency":

@@ -110,6 +110,19 @@ def series_slip(tied: bool) -> list[dict]:
                      "housing's stiffness before stiffening it"}]
 
 
+def progressive_spring(read: bool) -> list[dict]:
+    """The other reading of a housing spring named for its stiffening: a backlash taken up
+    slowly."""
+    if not read:
+        return []
+    return [{"alternative": ["backlash"], "reading": "progressive_spring",
+             "text": "the extra twist grows ever more slowly with torque up to T0: read as a "
+                     "series spring that stiffens (contact closing gradually, bolted joints); "
+                     "a clearance taken up over the same wide torque band reads about the "
+                     "same, but the catalog's lost motion is taken up within ±3 % of the "
+                     "torque its spring constant is given at (FD table 314-1)"}]
+
+
 def undecided(named: tuple[str, ...], rivals: tuple[str, ...]) -> list[dict]:
     """The reading of a second effect left unnamed because two fit about equally."""
     if not rivals:

@@ -5,16 +5,11 @@
    when no longer needed.
 2. Gear effects: every single effect and every pair is fitted (pairs from the shapes of
    both singles: multi-start), so a pair is found even when neither member wins alone.
-3. A model is accepted over a simpler one when it passes the gates:
-   ΔBIC = (N/τ)·ln(RSS_before/RSS_after) − Δk·ln(N/τ) > ``BIC_MIN`` with N/τ the effective
-   sample size (τ the noise's correlation time), the blocked 5-fold cross-validated error
-   falls by ``CV_GAIN_MIN`` (contiguous chunks: correlated neighbours are held out
-   together), the variance it explains is ≥ ``EXPLAINED_MIN`` of the noise variance; and an
-   effect added to another must explain ≥ ``SECOND_SHARE_MIN`` of the structure the other
-   leaves (residual variance above the noise): the shape mismatch of an effect's formula
-   must not be named as a second effect.
-4. Evidence of the effect's signature: hysteresis needs loading and unloading branches that
-   differ beyond the noise (a loop), not only a better fit (:func:`loop_evidence`).
+3. A model is accepted over a simpler one when it passes the gates of :mod:`.gates`
+   (ΔBIC on the effective sample size, blocked cross-validation, explained variance, the
+   share a second effect must explain; a loop for hysteresis).
+4. A housing spring may stiffen (:mod:`.springs`): a slowly taken-up backlash is weighed
+   against it, and one named effect may have it as its second.
 5. Readings: when another pair with the same first member comes within
    ``SECOND_AMBIGUITY`` of the best pair's ΔBIC, the second is not identified and only the
    first is named (:func:`ambiguous_second`); a hysteresis + housing spring pair whose
@@ -24,134 +19,30 @@
 References
 ----------
 Schwarz, G. (1978) "Estimating the dimension of a model", Ann. Stat. 6: BIC.
-Kass, R. E., Raftery, A. E. (1995) J. Am. Stat. Assoc. 90: ΔBIC > 10 is very strong evidence.
-Roberts, D. R. et al. (2017) "Cross-validation strategies for data with temporal, spatial,
-hierarchical, or phylogenetic structure", Ecography 40: blocked cross-validation.
 """
 
 from __future__ import annotations
 
 import itertools
 import math
-from dataclasses import dataclass, replace
+from dataclasses import replace
 
-import numpy as np
 
 from . import effects as fx
-from . import rig
+from . import rig, springs
 from .fitting import Fit, Problem, finish, fit_model, nonlinear
-from .noise import ar1_time, noise_model
+from .gates import (BIC_MIN, EXPLAINED_MIN, GATE_NOTE, Candidate, Gate, gate, has_evidence,
+                    round_noise)
 from .refine import refine_te_order
-from .regions import directions
 
-BIC_MIN = 10.0
-CV_GAIN_MIN = 0.05
-EXPLAINED_MIN = 0.1
-SECOND_SHARE_MIN = 0.3
+__all__ = ["BIC_MIN", "GATE_NOTE", "Candidate", "Gate", "gate", "round_noise", "select_gear",
+           "select_rig", "recheck_rig"]
+
 # Two pairs that share a member and whose ΔBIC differ by less than this share of the best:
 # what the shared member leaves fits either other member about as well, so it is shape the
 # shared member's formula misses, not an identified second effect.
 SECOND_AMBIGUITY = 0.05
-# Loop evidence: branch separation χ² z-score and RMS (in noise RMS) over torque bins.
-LOOP_Z = 5.0
-LOOP_RMS_MIN = 0.5
-LOOP_BINS = 10
 MAX_GEAR_EFFECTS = 2
-GATE_NOTE = (f"an effect is named when ΔBIC > {BIC_MIN:g} (effective sample size N/τ), the "
-             f"blocked 5-fold cross-validated error falls by ≥ {CV_GAIN_MIN:.0%}, it explains "
-             f"≥ {EXPLAINED_MIN:g}× the noise variance and, added to another effect, "
-             f"≥ {SECOND_SHARE_MIN:.0%} of what that one leaves; hysteresis needs a loop "
-             "(loading and unloading branches apart beyond the noise)")
-
-
-@dataclass
-class Gate:
-    """The evidence of ``fit`` over ``reference``."""
-
-    delta_bic: float
-    cv_gain: float
-    explained: float        # explained variance / noise variance
-    share: float            # share of the reference's structure above the noise explained
-
-    def passes(self, second: bool = False) -> bool:
-        ok = (self.delta_bic > BIC_MIN and self.cv_gain > CV_GAIN_MIN
-              and self.explained > EXPLAINED_MIN)
-        return ok and (not second or self.share >= SECOND_SHARE_MIN)
-
-
-def gate(problem: Problem, reference: Fit, fit: Fit, sigma: float, tau: float) -> Gate:
-    n = len(problem.rows)
-    n_eff = n / tau
-    dk = fit.n_params - reference.n_params
-    bic = n_eff * math.log(reference.rss / max(fit.rss, 1e-300)) - dk * math.log(n_eff)
-    cv = ((reference.cv_mse - fit.cv_mse) / reference.cv_mse if reference.cv_mse > 0
-          else 0.0)
-    explained = (reference.rss - fit.rss) / n / sigma ** 2
-    structure = reference.rss / n - sigma ** 2
-    share = (reference.rss - fit.rss) / n / structure if structure > 0 else math.inf
-    return Gate(bic, cv, explained, share)
-
-
-def round_noise(problem: Problem, fits: list[Fit]) -> tuple[float, float]:
-    """(σ, τ): noise RMS and correlation time [fitted rows] for one round of candidates.
-
-    From the residual of all the round's candidates together (their columns at their own
-    shapes, one least squares): the residual of one candidate still holds the effects it
-    lacks, which would pass for noise (a transmission error sampled a dozen times per
-    revolution is as rough as noise to the lagged differences) and deflate every candidate's
-    evidence alike. τ = (1 + φ)/(1 − φ) of the AR(1) fit (:func:`.noise.noise_model`).
-    """
-    X = np.column_stack([f.columns for f in fits])
-    beta = np.linalg.lstsq(X, problem.y, rcond=None)[0]
-    sigma, phi = noise_model(problem.y - X @ beta)
-    return sigma, ar1_time(phi)
-
-
-def loop_evidence(problem: Problem, residual: np.ndarray, sigma: float, tau: float
-                  ) -> tuple[float, float]:
-    """(z, rms/σ) of the difference between loading and unloading branches of the residual.
-
-    In each of ``LOOP_BINS`` torque bins the mean residual on loading rows minus that on
-    unloading rows; χ² of these differences against their standard errors
-    σ·√(τ·(1/n_up + 1/n_down)), as z = (χ² − m)/√(2m). A single-valued error of the curve
-    (stiffness, shape, play) moves both branches alike; only a loop separates them.
-    """
-    torque = problem.base.inputs["torque_Nm"][problem.rows]
-    up = directions(problem)[problem.rows] > 0
-    edges = np.linspace(torque.min(), torque.max(), LOOP_BINS + 1)
-    index = np.clip(np.searchsorted(edges, torque, side="right") - 1, 0, LOOP_BINS - 1)
-    diffs, errs = [], []
-    for b in range(LOOP_BINS):
-        a, d = residual[(index == b) & up], residual[(index == b) & ~up]
-        if len(a) >= 5 and len(d) >= 5:
-            diffs.append(a.mean() - d.mean())
-            errs.append(sigma * math.sqrt(tau * (1 / len(a) + 1 / len(d))))
-    if not diffs:
-        return 0.0, 0.0
-    diffs, errs = np.array(diffs), np.array(errs)
-    m = len(diffs)
-    chi2 = float(np.sum((diffs / errs) ** 2))
-    return (chi2 - m) / math.sqrt(2 * m), float(np.sqrt(np.mean(diffs ** 2))) / sigma
-
-
-def has_evidence(problem: Problem, effect: str, without: Fit, sigma: float, tau: float
-                 ) -> bool:
-    """The effect's signature is in the residual of the model without it."""
-    if effect != "hysteresis":
-        return True
-    z, rms = loop_evidence(problem, without.residual(problem), sigma, tau)
-    return z > LOOP_Z and rms > LOOP_RMS_MIN
-
-
-@dataclass
-class Candidate:
-    effects: tuple[str, ...]      # the gear effects of the model, most important first
-    fit: Fit
-    gate: Gate
-    passes: bool
-    reason: str = ""
-    undecided: tuple[str, ...] = ()   # second effects left unnamed as ambiguous
-    series_slip: bool = False         # the pair reads the same as one series slip element
 
 
 def select_rig(problem: Problem, start: Fit) -> tuple[Fit, list[dict], dict[str, Fit] | None]:
@@ -216,6 +107,10 @@ def select_gear(problem: Problem, start: Fit, singles: dict[str, Fit] | None = N
         best = Candidate(("hysteresis",), tied, gate(problem, start, tied, sigma, tau), True,
                          series_slip=True)
         out = [best if c.effects == best.effects else c for c in out]
+    spring = springs.stiffening(problem, start, best, singles, sigma, tau) if best else None
+    if spring is not None:
+        out = [c for c in out if c.effects != spring.effects] + [spring]
+        best = spring
     return best, out
 
 

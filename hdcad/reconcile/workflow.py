@@ -164,7 +164,8 @@ def reconcile(kind: str, data: dict, model: GearModel, catalog: Catalog,
                    candidates, rig_table, measurement, nuisances,
                    readings.equivalent(problem, final, named, nuisances)
                    + readings.undecided(named, best.undecided if best else ())
-                   + readings.series_slip(bool(best and best.series_slip)))
+                   + readings.series_slip(bool(best and best.series_slip))
+                   + readings.progressive_spring(bool(best and best.progressive)))
 
 
 def _steps(problem, named, candidates, final, keep) -> list[Step]:

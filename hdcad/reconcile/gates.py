@@ -1,0 +1,135 @@
+"""The evidence an effect must show to be named: the gates and the loop test.
+
+A model is accepted over a simpler one when it passes the gates:
+ΔBIC = (N/τ)·ln(RSS_before/RSS_after) − Δk·ln(N/τ) > ``BIC_MIN`` with N/τ the effective
+sample size (τ the noise's correlation time), the blocked 5-fold cross-validated error falls
+by ``CV_GAIN_MIN`` (contiguous chunks: correlated neighbours are held out together), the
+variance it explains is ≥ ``EXPLAINED_MIN`` of the noise variance; and an effect added to
+another must explain ≥ ``SECOND_SHARE_MIN`` of the structure the other leaves (residual
+variance above the noise): the shape mismatch of an effect's formula must not be named as a
+second effect. Hysteresis also needs its signature: loading and unloading branches that
+differ beyond the noise (a loop), not only a better fit (:func:`loop_evidence`).
+
+References
+----------
+Schwarz, G. (1978) "Estimating the dimension of a model", Ann. Stat. 6: BIC.
+Kass, R. E., Raftery, A. E. (1995) J. Am. Stat. Assoc. 90: ΔBIC > 10 is very strong evidence.
+Roberts, D. R. et al. (2017) "Cross-validation strategies for data with temporal, spatial,
+hierarchical, or phylogenetic structure", Ecography 40: blocked cross-validation.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from .fitting import Fit, Problem
+from .noise import ar1_time, noise_model
+from .regions import directions
+
+BIC_MIN = 10.0
+CV_GAIN_MIN = 0.05
+EXPLAINED_MIN = 0.1
+SECOND_SHARE_MIN = 0.3
+# Loop evidence: branch separation χ² z-score and RMS (in noise RMS) over torque bins.
+LOOP_Z = 5.0
+LOOP_RMS_MIN = 0.5
+LOOP_BINS = 10
+GATE_NOTE = (f"an effect is named when ΔBIC > {BIC_MIN:g} (effective sample size N/τ), the "
+             f"blocked 5-fold cross-validated error falls by ≥ {CV_GAIN_MIN:.0%}, it explains "
+             f"≥ {EXPLAINED_MIN:g}× the noise variance and, added to another effect, "
+             f"≥ {SECOND_SHARE_MIN:.0%} of what that one leaves; hysteresis needs a loop "
+             "(loading and unloading branches apart beyond the noise)")
+
+
+@dataclass
+class Gate:
+    """The evidence of ``fit`` over ``reference``."""
+
+    delta_bic: float
+    cv_gain: float
+    explained: float        # explained variance / noise variance
+    share: float            # share of the reference's structure above the noise explained
+
+    def passes(self, second: bool = False) -> bool:
+        ok = (self.delta_bic > BIC_MIN and self.cv_gain > CV_GAIN_MIN
+              and self.explained > EXPLAINED_MIN)
+        return ok and (not second or self.share >= SECOND_SHARE_MIN)
+
+
+def gate(problem: Problem, reference: Fit, fit: Fit, sigma: float, tau: float) -> Gate:
+    n = len(problem.rows)
+    n_eff = n / tau
+    dk = fit.n_params - reference.n_params
+    bic = n_eff * math.log(reference.rss / max(fit.rss, 1e-300)) - dk * math.log(n_eff)
+    cv = ((reference.cv_mse - fit.cv_mse) / reference.cv_mse if reference.cv_mse > 0
+          else 0.0)
+    explained = (reference.rss - fit.rss) / n / sigma ** 2
+    structure = reference.rss / n - sigma ** 2
+    share = (reference.rss - fit.rss) / n / structure if structure > 0 else math.inf
+    return Gate(bic, cv, explained, share)
+
+
+def round_noise(problem: Problem, fits: list[Fit]) -> tuple[float, float]:
+    """(σ, τ): noise RMS and correlation time [fitted rows] for one round of candidates.
+
+    From the residual of all the round's candidates together (their columns at their own
+    shapes, one least squares): the residual of one candidate still holds the effects it
+    lacks, which would pass for noise (a transmission error sampled a dozen times per
+    revolution is as rough as noise to the lagged differences) and deflate every candidate's
+    evidence alike. τ = (1 + φ)/(1 − φ) of the AR(1) fit (:func:`.noise.noise_model`).
+    """
+    X = np.column_stack([f.columns for f in fits])
+    beta = np.linalg.lstsq(X, problem.y, rcond=None)[0]
+    sigma, phi = noise_model(problem.y - X @ beta)
+    return sigma, ar1_time(phi)
+
+
+def loop_evidence(problem: Problem, residual: np.ndarray, sigma: float, tau: float
+                  ) -> tuple[float, float]:
+    """(z, rms/σ) of the difference between loading and unloading branches of the residual.
+
+    In each of ``LOOP_BINS`` torque bins the mean residual on loading rows minus that on
+    unloading rows; χ² of these differences against their standard errors
+    σ·√(τ·(1/n_up + 1/n_down)), as z = (χ² − m)/√(2m). A single-valued error of the curve
+    (stiffness, shape, play) moves both branches alike; only a loop separates them.
+    """
+    torque = problem.base.inputs["torque_Nm"][problem.rows]
+    up = directions(problem)[problem.rows] > 0
+    edges = np.linspace(torque.min(), torque.max(), LOOP_BINS + 1)
+    index = np.clip(np.searchsorted(edges, torque, side="right") - 1, 0, LOOP_BINS - 1)
+    diffs, errs = [], []
+    for b in range(LOOP_BINS):
+        a, d = residual[(index == b) & up], residual[(index == b) & ~up]
+        if len(a) >= 5 and len(d) >= 5:
+            diffs.append(a.mean() - d.mean())
+            errs.append(sigma * math.sqrt(tau * (1 / len(a) + 1 / len(d))))
+    if not diffs:
+        return 0.0, 0.0
+    diffs, errs = np.array(diffs), np.array(errs)
+    m = len(diffs)
+    chi2 = float(np.sum((diffs / errs) ** 2))
+    return (chi2 - m) / math.sqrt(2 * m), float(np.sqrt(np.mean(diffs ** 2))) / sigma
+
+
+def has_evidence(problem: Problem, effect: str, without: Fit, sigma: float, tau: float
+                 ) -> bool:
+    """The effect's signature is in the residual of the model without it."""
+    if effect != "hysteresis":
+        return True
+    z, rms = loop_evidence(problem, without.residual(problem), sigma, tau)
+    return z > LOOP_Z and rms > LOOP_RMS_MIN
+
+
+@dataclass
+class Candidate:
+    effects: tuple[str, ...]      # the gear effects of the model, most important first
+    fit: Fit
+    gate: Gate
+    passes: bool
+    reason: str = ""
+    undecided: tuple[str, ...] = ()   # second effects left unnamed as ambiguous
+    series_slip: bool = False         # the pair reads the same as one series slip element
+    progressive: bool = False         # a slow backlash read as a stiffening series spring

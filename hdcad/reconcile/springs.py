@@ -1,0 +1,117 @@
+"""A housing spring that stiffens, against a backlash that is taken up slowly.
+
+A clearance closing over a wide torque band and a series spring whose stiffness grows with
+torque (contact that closes gradually, bolted joints) bend the torque–twist curve alike.
+Two readings follow from it once the gear effects are named:
+
+- a named backlash whose tanh width is wide (> ``TAKEUP_MAX``·T0) is weighed against the
+  stiffening spring (:func:`slow_backlash`);
+- a named backlash may have a stiffening spring as its second (:func:`stiffening_second`):
+  a linear series spring is the catalog compliance's own scatter (the stiffness scale takes
+  it), a stiffening one bends the curve.
+
+References
+----------
+Rivin, E. I. (1999) *Stiffness and Damping in Mechanical Design*, Marcel Dekker, ch. 4:
+contact deformations, stiffness that grows with load.
+Nordin, M., Gutman, P.-O. (2002) "Controlling mechanical systems with backlash — a survey",
+Automatica 38(10): dead-zone forms of a backlash.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import replace
+
+from scipy.optimize import minimize_scalar
+
+from .fitting import Fit, Problem, finish, fit_model, nonlinear
+from .gates import BIC_MIN, Candidate, gate
+
+# A clearance is taken up at low torque: the catalog gives lost motion at ±3 % of the
+# torque of its spring constant (FD table 314-1: ±load / load = 0.029–0.033). A backlash
+# whose tanh width exceeds this share of T0 is still closing at 2·T_w = 40 % of T0 (96 %
+# closed), over ten times the catalog's load: it is read against a series spring that
+# stiffens, which bends the curve the same way (:func:`slow_backlash`).
+TAKEUP_MAX = 0.2
+# T_k / T0 of the stiffening spring: a knee far below the take-up torque is a clearance's
+# step (the cube root of T rises steeply from zero)
+KNEE_BOUNDS = (0.1, 10.0)
+
+
+def stiffening(problem: Problem, start: Fit, best: Candidate, singles: dict[str, Fit],
+               sigma: float, tau: float) -> Candidate | None:
+    """The candidate the named model is read as once a housing spring may stiffen, or None
+    when it stays as it is."""
+    if problem.kind != "torsion":
+        return None
+    return (slow_backlash(problem, start, best, singles, sigma, tau)
+            or stiffening_second(problem, start, best, sigma, tau))
+
+
+def slow_backlash(problem: Problem, start: Fit, best: Candidate, singles: dict[str, Fit],
+                  sigma: float, tau: float) -> Candidate | None:
+    """A named backlash taken up only slowly (tanh width > ``TAKEUP_MAX``·T0) read as a
+    housing spring that stiffens (:func:`.effects.progressive_twist`, knee torque fitted)
+    when the backlash does not fit clearly better (ΔBIC ≤ ``BIC_MIN``) and the spring passes
+    the gates (over the other member alone too, in a pair); else None.
+
+    A lost motion not taken up by a few per cent of the rated torque is not what the
+    catalog calls lost motion; the backlash is reported as the other reading.
+    """
+    if "backlash" not in best.effects:
+        return None
+    if best.fit.theta["backlash.T_w"] <= TAKEUP_MAX * problem.scales["T0"]:
+        return None
+    named = tuple(dict.fromkeys("housing_compliance" if e == "backlash" else e
+                                for e in best.effects))
+    spring = _knee_fit(problem, start.effects + named, best.fit.theta)
+    g = gate(problem, start, spring, sigma, tau)
+    other = [e for e in named if e != "housing_compliance"]
+    if (gate(problem, spring, best.fit, sigma, tau).delta_bic <= BIC_MIN and g.passes()
+            and all(gate(problem, singles[e], spring, sigma, tau).passes(second=True)
+                    for e in other)):
+        return Candidate(named, spring, g, True, progressive=True)
+    problem.housing_knee = math.inf
+    return None
+
+
+def stiffening_second(problem: Problem, start: Fit, best: Candidate, sigma: float,
+                      tau: float) -> Candidate | None:
+    """A named backlash with a housing spring that stiffens as its second, when that spring
+    earns its place over the backlash alone; else None.
+
+    A linear series spring is the catalog compliance's own scatter (the stiffness scale
+    takes it), so its pair with the backlash fails; a spring that stiffens bends the curve
+    away from zero torque, where a clearance is already closed. Not after a hysteresis: its
+    loop's own saturation bends the curve too, and a stiffening spring would take the loop
+    formula's shape mismatch (suite B's Bouc–Wen and Dahl singles, 2 of 12 at seed 7).
+    """
+    if best.effects != ("backlash",):
+        return None
+    named = best.effects + ("housing_compliance",)
+    pair = _knee_fit(problem, start.effects + named, best.fit.theta)
+    g = gate(problem, start, pair, sigma, tau)
+    if g.passes() and gate(problem, best.fit, pair, sigma, tau).passes(second=True):
+        return Candidate(named, pair, g, True)
+    problem.housing_knee = math.inf
+    return None
+
+
+def _knee_fit(problem: Problem, effects: tuple[str, ...], theta: dict[str, float]) -> Fit:
+    """The model with the housing spring's knee torque fitted, the knee counting as one
+    more parameter; leaves the knee set on ``problem``. The knee is searched (bounded, on its
+    logarithm) with the other shapes held at ``theta``, then all are fitted at that knee."""
+    t0 = problem.scales["T0"]
+    shapes = nonlinear(problem.kind, effects)
+
+    def held(log_knee: float) -> float:
+        problem.housing_knee = t0 * math.exp(log_knee)
+        return finish(problem, effects, theta, len(shapes)).rss
+
+    lo, hi = (math.log(b) for b in KNEE_BOUNDS)
+    found = minimize_scalar(held, bounds=(lo, hi), method="bounded",
+                            options={"xatol": 0.05, "maxiter": 20})
+    problem.housing_knee = t0 * math.exp(found.x)
+    fit = fit_model(problem, effects, theta)
+    return replace(fit, n_params=fit.n_params + 1)
