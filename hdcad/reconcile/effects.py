@@ -364,7 +364,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
         description=("An extra spring in series (housing, shafts, fixture): the catalog twist "
                      "is of the component alone and excludes output shafts (seed 000 p.020), so "
                      "the measured twist is larger than the catalog stiffness gives."),
-        form="θ = θ_catalog(T) + T/K_h",
+        form=("θ = θ_catalog(T) + T/K_h; a spring that stiffens: θ = θ_catalog(T) + "
+              "T_k·u/K_h, u + u³ = T/T_k (K_h its stiffness at T = 0)"),
         parameters=(
             Parameter("compliance", "rad/(N·m)", "1/K_h", 0.0, 10.0, "1/K1", linear=True),
         ),

@@ -93,7 +93,8 @@ def refine_hysteresis(problem: Problem, fit: Fit) -> Fit:
     Tjahjowidodo, T., Al-Bender, F., Van Brussel, H. (2006) ISMA, Leuven.
     """
     if (problem.kind != "torsion" or "hysteresis" not in fit.effects
-            or problem.base.curve is None or problem.hysteresis_series):
+            or problem.base.curve is None or problem.hysteresis_series
+            or problem.hysteresis_through_gear):  # already in that form
         return fit
     problem.hysteresis_through_gear = True
     trial = fit_model(problem, fit.effects, fit.theta)

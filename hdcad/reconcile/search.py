@@ -14,7 +14,8 @@
    ``SECOND_AMBIGUITY`` of the best pair's ΔBIC, the second is not identified and only the
    first is named (:func:`ambiguous_second`); a hysteresis + housing spring pair whose
    spring is the loop's own slip compliance is named as one slip element in series, and
-   reported with the pair as its other reading (:func:`series_slip`).
+   reported with the pair as its other reading (:func:`series_slip`), unless the pair with
+   its loop through the gear's compliance fits clearly better (:func:`_through_gear`).
 
 References
 ----------
@@ -102,7 +103,11 @@ def select_gear(problem: Problem, start: Fit, singles: dict[str, Fit] | None = N
     best = max(passing, key=lambda c: c.gate.delta_bic) if passing else None
     best = _unless_ambiguous(best, passing)
     tied = series_slip(problem, start, best, sigma, tau) if best is not None else None
-    if tied is not None:  # the simpler reading is named: one slip element in series
+    through = _through_gear(problem, best, tied, sigma, tau) if tied is not None else None
+    if through is not None:  # the pair stays, its loop through the gear's compliance
+        best = replace(best, fit=through, gate=gate(problem, start, through, sigma, tau))
+        out = [best if c.effects == best.effects else c for c in out]
+    elif tied is not None:  # the simpler reading is named: one slip element in series
         problem.hysteresis_series = True
         best = Candidate(("hysteresis",), tied, gate(problem, start, tied, sigma, tau), True,
                          series_slip=True)
@@ -165,6 +170,25 @@ def series_slip(problem: Problem, start: Fit, best: Candidate, sigma: float, tau
     return tied if gate(problem, tied, best.fit, sigma, tau).delta_bic <= 0.0 else None
 
 
+def _through_gear(problem: Problem, best: Candidate, tied: Fit, sigma: float, tau: float
+                  ) -> Fit | None:
+    """The hysteresis + housing pair with the loop through the gear's compliance
+    (:func:`.refine.refine_hysteresis`) when it passes the gates over the series slip
+    element ``tied``; else None. A loop that narrows where the gear stiffens, beside a
+    spring of its own, is not one slip element in series: the series reading is tested
+    against both forms of the loop. Leaves the form set on ``problem`` when it is kept."""
+    problem.hysteresis_through_gear = True
+    pair = fit_model(problem, best.fit.effects, best.fit.theta)
+    if gate(problem, tied, pair, sigma, tau).passes():
+        problem.notes.append("hysteresis: a friction torque in parallel with the gear's spring "
+                             "(its twist the torque × the catalog curve's local compliance), "
+                             "beside a housing spring of its own: it fits clearly better than "
+                             "one slip element in series")
+        return pair
+    problem.hysteresis_through_gear = False
+    return None
+
+
 def _pair_fit(problem: Problem, start: Fit, fa: Fit, fb: Fit) -> Fit:
     """A pair fitted from both singles' shapes (multi-start), the better of the two."""
     effects = start.effects + (fa.effects[-1], fb.effects[-1])
@@ -186,6 +210,9 @@ def _pair(problem: Problem, start: Fit, fa: Fit, fb: Fit, fit: Fit, sigma: float
             ok, reason = False, f"{member} adds too little to {other.effects[-1]}"
         elif not has_evidence(problem, member, other, sigma, tau):
             ok, reason = False, f"no loop in the residual of {other.effects[-1]}"
+        elif ok and not _beyond_law(problem, member, other, fit, sigma, tau):
+            ok, reason = False, (f"{member} adds too little to {other.effects[-1]} with its "
+                                 "viscosity law fitted")
     # the member that explains more alone is named first
     order = (a, b) if fa.rss <= fb.rss else (b, a)
     return Candidate(order, fit, g, ok, reason)
@@ -212,6 +239,30 @@ def _beyond_modulation(problem: Problem, member: str, other: Fit, fit: Fit, sigm
         problem.te_order = saved
     g = gate(problem, modulated, pair, sigma, tau)
     return g.delta_bic > BIC_MIN and g.explained > EXPLAINED_MIN
+
+
+def _beyond_law(problem: Problem, member: str, other: Fit, fit: Fit, sigma: float,
+                tau: float) -> bool:
+    """Whether ``member`` still earns its place over a temperature dependence that has its
+    best viscosity law (:data:`.effects.VISCOSITY_LAWS_C`; Reynolds' names the effects).
+    The laws differ in how the viscosity curves over the temperatures: what Reynolds' leaves
+    of an Andrade or Vogel–Cameron oil is the first effect's own shape, which a low-load
+    factor, also scaling the efficiency, would otherwise be named for."""
+    if other.effects[-1] != "temperature_dependence" or problem.kind != "efficiency":
+        return True
+    saved = problem.viscosity_C
+    try:
+        fits = []
+        for model in (other, fit):
+            trials = [model]
+            for constant in fx.VISCOSITY_LAWS_C.values():
+                if math.isfinite(constant):
+                    problem.viscosity_C = constant
+                    trials.append(fit_model(problem, model.effects, model.theta))
+            fits.append(min(trials, key=lambda f: f.rss))
+    finally:
+        problem.viscosity_C = saved
+    return gate(problem, fits[0], fits[1], sigma, tau).passes(second=True)
 
 
 def recheck_rig(problem: Problem, final: Fit) -> Fit:

@@ -119,17 +119,27 @@ def _outliers(residual: np.ndarray) -> np.ndarray:
     return np.flatnonzero(np.abs(local) > OUTLIER_SIGMA * sigma)
 
 
+def _without_outliers(problem: Problem, fit: Fit) -> Fit:
+    """``fit`` again without the gross outliers of its residual not yet left out.
+
+    Once on the baseline, so that outliers do not steer the search, and once on the named
+    model before its final form: before its effects are in, the residual holds them (an
+    efficiency grid run in random order reads as rough as noise to the neighbours) and hides
+    an outlier in them."""
+    bad = np.setdiff1d(_outliers(problem.base.y - fit.prediction), problem.outliers)
+    if not bad.size:
+        return fit
+    problem.outliers = np.union1d(problem.outliers, bad)
+    set_rows(problem, np.setdiff1d(problem.rows, bad))
+    which = "the named model's fit" if fit.effects else "the fit"
+    problem.notes.append(f"{bad.size} gross outlier(s) (> {OUTLIER_SIGMA:g}× the noise RMS from "
+                         f"their neighbours) left out of {which} and the RMSE")
+    return fit_model(problem, fit.effects, fit.theta)
+
+
 def _start(problem: Problem) -> Fit:
     """The baseline fit, with gross outliers found on its residual and left out."""
-    fit = fit_model(problem, ())
-    bad = _outliers(problem.base.y - fit.prediction)
-    if bad.size:
-        problem.outliers = bad
-        set_rows(problem, np.setdiff1d(problem.rows, bad))
-        problem.notes.append(f"{bad.size} gross outlier(s) (> {OUTLIER_SIGMA:g}× the noise "
-                             "RMS from their neighbours) left out of the fit and the RMSE")
-        fit = fit_model(problem, (), fit.theta)
-    return fit
+    return _without_outliers(problem, fit_model(problem, ()))
 
 
 def reconcile(kind: str, data: dict, model: GearModel, catalog: Catalog,
@@ -139,6 +149,10 @@ def reconcile(kind: str, data: dict, model: GearModel, catalog: Catalog,
     base, fixes = _baseline(kind, data, model, catalog, load_inertia_kgm2)
     problem = make_problem(kind, base)
     start = _start(problem)
+    with_rig, rig_table, singles = search.select_rig(problem, start)
+    best, candidates = search.select_gear(problem, with_rig, singles)
+    final = search.recheck_rig(problem, best.fit if best else with_rig)
+    final = refine.refine(problem, _without_outliers(problem, final))
     keep = np.ones(len(base.y), bool)
     keep[problem.outliers] = False
 
@@ -146,10 +160,6 @@ def reconcile(kind: str, data: dict, model: GearModel, catalog: Catalog,
         r = (base.y - fit.prediction)[keep]
         return noise_rms(r) or _rmse(r)
 
-    with_rig, rig_table, singles = search.select_rig(problem, start)
-    best, candidates = search.select_gear(problem, with_rig, singles)
-    final = search.recheck_rig(problem, best.fit if best else with_rig)
-    final = refine.refine(problem, final)
     named = best.effects if best else ()
     resid0 = (base.y - start.prediction)
     residual = base.y - final.prediction
