@@ -14,7 +14,7 @@ import signal
 import sys
 from typing import Sequence
 
-from . import __version__
+from . import __version__, _entry
 from .errors import InputError
 from .report.format import check_label, fmt, margin_text, relation_text, status_text
 
@@ -373,9 +373,11 @@ def _on_interrupt(signum, frame) -> None:
 def main(argv: Sequence[str] | None = None) -> int:
     argv = sys.argv[1:] if argv is None else list(argv)
     debug = "--debug" in argv
-    if signal.getsignal(signal.SIGINT) is signal.default_int_handler:
+    if signal.getsignal(signal.SIGINT) in (signal.default_int_handler, _entry.remember):
         signal.signal(signal.SIGINT, _on_interrupt)
     try:
+        if _entry.caught:  # Ctrl-C while the command line was loading
+            raise KeyboardInterrupt
         args = _parser().parse_args(argv)
         if getattr(args, "design_top", None) and not args.out:
             raise InputError("--design-top", "needs --out DIR for the packets")

@@ -45,6 +45,18 @@ def test_ctrl_c_is_exit_130(monkeypatch, capsys):
     assert "interrupted" in capsys.readouterr().err
 
 
+def test_ctrl_c_while_the_command_line_loads_is_exit_130(monkeypatch, capsys):
+    """The console command remembers Ctrl-C from its first line (``hdcad._entry``): an
+    interrupt while the command line's modules load ends the run with one line and 130."""
+    from hdcad import _entry
+    monkeypatch.setattr(_entry, "caught", [signal.SIGINT])
+    assert cli.main(["catalog"]) == 130
+    assert capsys.readouterr().err.strip() == "hdcad: interrupted"
+    from importlib.metadata import entry_points
+    command = next(e for e in entry_points(group="console_scripts") if e.name == "hdcad")
+    assert command.value == "hdcad._entry:run"
+
+
 def test_bad_arguments_are_exit_2(capsys):
     assert cli.main(["check"]) == 2
     assert cli.main(["reconcile", "vibration", "x.csv", "--model", "CSF-32-100-GH",
