@@ -83,6 +83,10 @@ def refine(problem: Problem, fit: Fit) -> Fit:
     return curved
 
 
+THROUGH_GEAR = ("hysteresis: a friction torque in parallel with the gear's spring (its twist "
+                "the torque × the catalog curve's local compliance)")
+
+
 def refine_hysteresis(problem: Problem, fit: Fit) -> Fit:
     """A named hysteresis read as a friction torque in parallel with the gear's spring:
     its twist is the torque times the catalog curve's local compliance, so the loop narrows
@@ -101,10 +105,8 @@ def refine_hysteresis(problem: Problem, fit: Fit) -> Fit:
     if trial.rss >= fit.rss:
         problem.hysteresis_through_gear = False
         return fit
-    problem.notes.append("hysteresis: a friction torque in parallel with the gear's spring "
-                         "(its twist the torque × the catalog curve's local compliance) "
-                         f"fits {math.sqrt(fit.rss / trial.rss):.2f}× closer than a "
-                         "constant compliance")
+    problem.notes.append(f"{THROUGH_GEAR} fits {math.sqrt(fit.rss / trial.rss):.2f}× closer "
+                         "than a constant compliance")
     return trial
 
 
@@ -114,6 +116,16 @@ def refine_viscosity(problem: Problem, fit: Fit) -> Fit:
     same parameters; the laws differ in how the viscosity curves over the temperatures)."""
     if "temperature_dependence" not in fit.effects:
         return fit
+    best, law = fit_viscosity_law(problem, fit)
+    problem.notes.append(f"viscosity law: {law} (C = {problem.viscosity_C:g} °C), the best "
+                         f"of {', '.join(fx.VISCOSITY_LAWS_C)} on these data")
+    return _speed_loss(problem, best)
+
+
+def fit_viscosity_law(problem: Problem, fit: Fit) -> tuple[Fit, str]:
+    """(fit, law name): ``fit`` (at Reynolds' exponential) or its refit under Andrade's or
+    Vogel–Cameron's law, whichever leaves the least residual; ``problem.viscosity_C`` is
+    left at that law."""
     best, law = fit, "Reynolds"
     for name, constant in fx.VISCOSITY_LAWS_C.items():
         if math.isinf(constant):
@@ -123,9 +135,7 @@ def refine_viscosity(problem: Problem, fit: Fit) -> Fit:
         if trial.rss < best.rss:
             best, law = trial, name
     problem.viscosity_C = fx.VISCOSITY_LAWS_C[law]
-    problem.notes.append(f"viscosity law: {law} (C = {problem.viscosity_C:g} °C), the best "
-                         f"of {', '.join(fx.VISCOSITY_LAWS_C)} on these data")
-    return _speed_loss(problem, best)
+    return best, law
 
 
 def _speed_loss(problem: Problem, fit: Fit) -> Fit:

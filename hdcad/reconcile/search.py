@@ -34,7 +34,7 @@ from . import rig, springs
 from .fitting import Fit, Problem, finish, fit_model, nonlinear
 from .gates import (BIC_MIN, EXPLAINED_MIN, GATE_NOTE, Candidate, Gate, gate, has_evidence,
                     round_noise)
-from .refine import refine_te_order
+from .refine import THROUGH_GEAR, fit_viscosity_law, refine_te_order
 
 __all__ = ["BIC_MIN", "GATE_NOTE", "Candidate", "Gate", "gate", "round_noise", "select_gear",
            "select_rig", "recheck_rig"]
@@ -106,11 +106,11 @@ def select_gear(problem: Problem, start: Fit, singles: dict[str, Fit] | None = N
     through = _through_gear(problem, best, tied, sigma, tau) if tied is not None else None
     if through is not None:  # the pair stays, its loop through the gear's compliance
         best = replace(best, fit=through, gate=gate(problem, start, through, sigma, tau))
-        out = [best if c.effects == best.effects else c for c in out]
     elif tied is not None:  # the simpler reading is named: one slip element in series
         problem.hysteresis_series = True
         best = Candidate(("hysteresis",), tied, gate(problem, start, tied, sigma, tau), True,
                          series_slip=True)
+    if tied is not None:
         out = [best if c.effects == best.effects else c for c in out]
     spring = springs.stiffening(problem, start, best, singles, sigma, tau) if best else None
     if spring is not None:
@@ -180,10 +180,8 @@ def _through_gear(problem: Problem, best: Candidate, tied: Fit, sigma: float, ta
     problem.hysteresis_through_gear = True
     pair = fit_model(problem, best.fit.effects, best.fit.theta)
     if gate(problem, tied, pair, sigma, tau).passes():
-        problem.notes.append("hysteresis: a friction torque in parallel with the gear's spring "
-                             "(its twist the torque × the catalog curve's local compliance), "
-                             "beside a housing spring of its own: it fits clearly better than "
-                             "one slip element in series")
+        problem.notes.append(f"{THROUGH_GEAR}, beside a housing spring of its own, fits "
+                             "clearly better than one slip element in series")
         return pair
     problem.hysteresis_through_gear = False
     return None
@@ -252,17 +250,10 @@ def _beyond_law(problem: Problem, member: str, other: Fit, fit: Fit, sigma: floa
         return True
     saved = problem.viscosity_C
     try:
-        fits = []
-        for model in (other, fit):
-            trials = [model]
-            for constant in fx.VISCOSITY_LAWS_C.values():
-                if math.isfinite(constant):
-                    problem.viscosity_C = constant
-                    trials.append(fit_model(problem, model.effects, model.theta))
-            fits.append(min(trials, key=lambda f: f.rss))
+        single, pair = (fit_viscosity_law(problem, model)[0] for model in (other, fit))
     finally:
         problem.viscosity_C = saved
-    return gate(problem, fits[0], fits[1], sigma, tau).passes(second=True)
+    return gate(problem, single, pair, sigma, tau).passes(second=True)
 
 
 def recheck_rig(problem: Problem, final: Fit) -> Fit:
