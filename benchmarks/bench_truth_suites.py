@@ -10,7 +10,10 @@ the category, columns: effects named) and the acceptance figures:
 - wrong second name: a correctly named single effect followed by another name;
 - rmse_after / noise_rms on correctly named cases (share ≤ 1.2);  median gap shrink;
 - equivalent decoys: reported with both readings (the effect and the nuisance);
-- measurement effects named as such (rig findings) on separable decoys.
+- measurement effects named as such (rig findings) on separable decoys;
+- exact: the gear effects named are the hidden ones, no more and no fewer (clean, single,
+  pair and separable-decoy cases): the figure that a method naming every effect at once
+  cannot win by naming more.
 
 Run: python benchmarks/bench_truth_suites.py [--suite truths/truth_b.py ...] [--per-cell 4]
      [--seed 7] [--jobs 2] [--kind torsion] [--sindy]
@@ -97,6 +100,8 @@ def score(case, result) -> dict:
         eq = set(case.equivalent_effects)
         out["both_readings"] = bool(eq & (set(named) | readings)) and (
             bool(readings) or not named)
+    if case.category in ("clean", "single", "pair", "decoy_separable"):
+        out["exact"] = set(named) == set(hidden)
     if case.category in ("single", "pair") and set(hidden) <= set(named):
         out["ratio"] = after / case.noise_rms if case.noise_rms else np.nan
         out["shrink"] = 1 - after / before if before else np.nan
@@ -117,7 +122,7 @@ def summary(rows: list[dict], label: str) -> None:
     ok_ratio = sum(x <= RMSE_FACTOR for x in ratios) / len(ratios) if ratios else np.nan
     print(f"{label:16s} single-first {fmt('first_right')} | pair-both {fmt('both')} | "
           f"false-alarm {fmt('false_alarm')} | wrong-2nd {fmt('wrong_second')} | "
-          f"rig-named {fmt('rig_right')} | equiv-both {fmt('both_readings')} | "
+          f"exact {fmt('exact')} | rig-named {fmt('rig_right')} | equiv-both {fmt('both_readings')} | "
           f"rmse≤1.2σ {ok_ratio:6.1%} (median {statistics.median(ratios) if ratios else np.nan:.2f}) | "
           f"shrink {statistics.median(shrinks) if shrinks else np.nan:6.1%}")
 
