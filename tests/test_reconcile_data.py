@@ -71,6 +71,19 @@ def test_min_rows_is_stated_per_kind_and_extra_columns_are_ignored(tmp_path):
     assert set(data) == set(COLUMNS["transmission"]) and len(data["input_angle_rad"]) == 600
 
 
+def test_an_efficiency_grid_of_three_temperatures_speeds_and_four_loads_is_enough():
+    """3 temperatures × 3 speeds × 4 loads = 36 rows, a common small test grid: accepted;
+    below MIN_ROWS (30: 24 rows to fit on in each of the 5 folds, 3× the largest model's
+    parameters) the error names the count."""
+    grid = np.array([(n, t, c) for c in (20.0, 40.0, 60.0) for n in (500.0, 1000.0, 2000.0)
+                     for t in (10.0, 30.0, 60.0, 100.0)])
+    data = {"input_speed_rpm": grid[:, 0], "load_torque_Nm": grid[:, 1],
+            "temperature_C": grid[:, 2], "efficiency_pct": np.full(len(grid), 75.0)}
+    assert len(validate_data("efficiency", data)["efficiency_pct"]) == 36
+    with pytest.raises(InputError, match="29 rows; efficiency needs at least 30"):
+        validate_data("efficiency", {k: v[:29] for k, v in data.items()})
+
+
 def test_validate_data_checks_in_memory_columns():
     with pytest.raises(InputError, match="different lengths"):
         validate_data("torsion", {"torque_Nm": np.ones(200), "twist_rad": np.ones(199)})

@@ -159,3 +159,27 @@ def test_a_loop_through_the_gear_beside_a_spring_of_its_own_keeps_the_pair():
     assert set(result["missing_effects"]) == {"hysteresis", "housing_compliance"}
     assert not _series_reading(result)
     assert result["rmse_after"] <= 1.2 * case.noise_rms
+
+
+@pytest.mark.parametrize("suite,name,named", [
+    # Roelands viscosity, churning loss ∝ (ν·n)^a at every temperature: the efficiency at
+    # 20 °C falls with speed; without the speed nuisance the grid-ordered residual read as
+    # noise 2.8× and 5× too large (τ 21 and 11) and nothing was named
+    ("f", "f-efficiency-single-temperature_dependence-roelands-churning-mult-112",
+     ["temperature_dependence"]),
+    ("f", "f-efficiency-single-temperature_dependence-roelands-churning-mult-113",
+     ["temperature_dependence"]),
+    # Andrade–Palmgren single: the speed that the law leaves was taken by a low-load second
+    ("e", "e-efficiency-single-temperature_dependence-andrade-palmgren-090",
+     ["temperature_dependence"]),
+])
+def test_an_efficiency_level_that_changes_with_speed_is_the_catalog_s_nuisance(suite, name,
+                                                                               named):
+    """The catalog's efficiency curves are given per input speed (seed 000 p.023): a level
+    that changes with speed belongs to the baseline, so a temperature law is named for the
+    temperature and a low-load factor for the load (seed 11, 2 per cell)."""
+    case = next(c for c in suite_cases(suite_path(suite), 11, 2) if c.name == name)
+    result = bench.reconcile_case(case)
+    assert result["missing_effects"] == named
+    assert result["rmse_after"] <= 1.2 * case.noise_rms
+    assert any(n["name"] == "efficiency_speed" for n in result["nuisances"])

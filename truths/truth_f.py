@@ -670,7 +670,11 @@ def _torsion_case(rng, m, category, effects, form, idx, combo, variant=None):
     elif category == "decoy_separable":
         gear_eff = ()
         if variant == "stiffness_scale":
+            # fixed 2026-11-26 after the blind score: ``base`` already carries s, so adding
+            # base - catalog applied the scale twice (the data were 15-17 % softer while the
+            # case says "inside the spread"); the reference is now the catalog curve itself
             z = base - _twist_cat(T, m, 1.0)
+            base = _twist_cat(T, m, 1.0)
             d = "stiffness scale %.3f (inside the catalog's +-10 %% spread)" % s
         elif variant == "sensor_gain":
             g = 1.0 + _pm(rng) * _u(rng, 0.03, 0.08)

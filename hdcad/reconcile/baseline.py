@@ -181,6 +181,9 @@ NUISANCE = {"torsion": (Parameter(
     "corner_width", "N·m", "torque width over which the compliance changes at T1 and T2",
     0.01, 1.0, "T1"),)}
 
+# Input speed at which the efficiency level η0 is given [r/min] (the speed nuisance's zero).
+SPEED_REFERENCE_RPM = 1000.0
+
 # The seeds call the stiffness table's values averages (seed 000 p.020) and state no spread;
 # ±10 % is assumed for the scatter of a real gear about them (printed with the result).
 STIFFNESS_SPREAD = 0.10
@@ -225,16 +228,27 @@ def transmission(data: dict, model: GearModel, catalog: Catalog) -> Baseline:
 
 
 def efficiency(data: dict, model: GearModel, catalog: Catalog) -> Baseline:
-    """Efficiency [%] = η0, a constant fitted to the data (the rated-torque efficiency)."""
+    """Efficiency [%] = η0 + η_n·ln(n/1000 r/min), fitted to the data: the rated-torque
+    efficiency and how it changes with input speed.
+
+    Both are nuisances: the catalog's efficiency curves (one per input speed, seed 000
+    p.023) are lost, and they fall with speed, so a level that changes with speed is the
+    catalog's own behaviour, not a missing effect (a temperature law must be named for the
+    temperature, not for the speeds). η_n is left out when the test runs at one speed.
+    """
     tr, source = rated_torque(model)
-    torque = data["load_torque_Nm"]
+    torque, speed = data["load_torque_Nm"], data["input_speed_rpm"]
     figures = {"rated_torque_Nm": (tr, source)}
     eta_r = model.get("efficiency_rated_pct")
     if eta_r is not None:
         figures["efficiency_rated_pct"] = (float(eta_r), eta_r.source)
     notes = [f"α = T/Tr with Tr = {tr:g} N·m ({source})"]
+    free, names, units = _offset(len(torque)), ("eta0",), ("%",)
+    if np.ptp(speed) > 0 and np.all(speed > 0):
+        free = np.column_stack([free, np.log(speed / SPEED_REFERENCE_RPM)])
+        names, units = names + ("eta_speed",), units + ("%",)
     return Baseline("efficiency", data["efficiency_pct"], np.zeros_like(torque),
-                    _offset(len(torque)), ("eta0",), ("%",), "%", figures, notes,
+                    free, names, units, "%", figures, notes,
                     {"alpha": torque / tr, "temperature_C": data["temperature_C"],
                      "input_speed_rpm": data["input_speed_rpm"], "load_torque_Nm": torque})
 

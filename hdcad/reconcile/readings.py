@@ -95,6 +95,14 @@ def nuisances(problem: Problem, fit: Fit) -> list[dict]:
         out.append({"name": "efficiency_level", "value": eta, "unit": "%",
                     "text": f"efficiency level η0 = {eta:.3g} % (the catalog's curves are "
                             "lost: the level is not compared)"})
+    slope = _beta(fit, "eta_speed")
+    if slope is not None:
+        per_doubling = slope * np.log(2.0)
+        out.append({"name": "efficiency_speed", "value": per_doubling, "unit": "%",
+                    "text": f"efficiency {'rises' if per_doubling > 0 else 'falls'} by "
+                            f"{abs(per_doubling):.3g} %-points per doubling of input speed "
+                            "(the catalog's efficiency curves per speed are lost: not "
+                            "compared)"})
     return out
 
 
