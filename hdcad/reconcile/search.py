@@ -15,7 +15,10 @@
    first is named (:func:`ambiguous_second`); a hysteresis + housing spring pair whose
    spring is the loop's own slip compliance is named as one slip element in series, and
    reported with the pair as its other reading (:func:`series_slip`), unless the pair with
-   its loop through the gear's compliance fits clearly better (:func:`_through_gear`).
+   its loop through the gear's compliance fits clearly better (:func:`_through_gear`);
+   otherwise the spring must also earn its place beside the loop through the gear's
+   compliance, or it is the loop's own narrowing and only the hysteresis is named
+   (:func:`_spring_of_its_own`).
 
 References
 ----------
@@ -112,6 +115,8 @@ def select_gear(problem: Problem, start: Fit, singles: dict[str, Fit] | None = N
                          series_slip=True)
     if tied is not None:
         out = [best if c.effects == best.effects else c for c in out]
+    else:
+        best = _spring_of_its_own(problem, best, passing, sigma, tau)
     spring = springs.stiffening(problem, start, best, singles, sigma, tau) if best else None
     if spring is not None:
         out = [c for c in out if c.effects != spring.effects] + [spring]
@@ -211,6 +216,7 @@ def _pair(problem: Problem, start: Fit, fa: Fit, fb: Fit, fit: Fit, sigma: float
         elif ok and not _beyond_law(problem, member, other, fit, sigma, tau):
             ok, reason = False, (f"{member} adds too little to {other.effects[-1]} with its "
                                  "viscosity law fitted")
+
     # the member that explains more alone is named first
     order = (a, b) if fa.rss <= fb.rss else (b, a)
     return Candidate(order, fit, g, ok, reason)
@@ -254,6 +260,33 @@ def _beyond_law(problem: Problem, member: str, other: Fit, fit: Fit, sigma: floa
     finally:
         problem.viscosity_C = saved
     return gate(problem, single, pair, sigma, tau).passes(second=True)
+
+
+def _spring_of_its_own(problem: Problem, best: Candidate | None, passing: list[Candidate],
+                       sigma: float, tau: float) -> Candidate | None:
+    """The best candidate, or its hysteresis alone when the housing spring beside it adds
+    too little once the loop runs through the gear's compliance (:data:`.refine.THROUGH_GEAR`:
+    it narrows where the gear stiffens). Beside a loop of constant width a linear spring can
+    stand in for part of that narrowing; a spring of the housing's own is needed with either
+    form of the loop."""
+    single = next((c for c in passing if c.effects == ("hysteresis",)), None)
+    if (best is None or set(best.effects) != {"hysteresis", "housing_compliance"}
+            or single is None or problem.base.curve is None):
+        return best
+    problem.hysteresis_through_gear = True
+    try:
+        alone = fit_model(problem, single.fit.effects, single.fit.theta)
+        pair = min((fit_model(problem, best.fit.effects, theta)
+                    for theta in (best.fit.theta, {**best.fit.theta, **alone.theta})),
+                   key=lambda f: f.rss)
+    finally:
+        problem.hysteresis_through_gear = False
+    if gate(problem, alone, pair, sigma, tau).passes(second=True):
+        return best
+    problem.notes.append("housing_compliance beside the loop adds too little once the loop "
+                         "runs through the gear's compliance: read as the loop's own "
+                         "narrowing, not named")
+    return single
 
 
 def recheck_rig(problem: Problem, final: Fit) -> Fit:
