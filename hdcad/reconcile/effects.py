@@ -227,7 +227,8 @@ def harmonic_error(wg_angle_rad: np.ndarray, order: int, amplitude_rad: float,
 
 
 def low_load_factor(alpha: np.ndarray, c: float, q: float, speed_rpm: np.ndarray | None = None,
-                    s: float = 0.0) -> np.ndarray:
+                    s: float = 0.0, viscosity: np.ndarray | None = None,
+                    k: float = 0.0) -> np.ndarray:
     """Efficiency correction Ke(α) [-] for α = T/Tr < 1; Ke = 1 for α ≥ 1.
 
     Ke = (α·(1 + c_n)/(α + c_n))^q: a load-independent loss (no-load running torque, seed 000
@@ -235,10 +236,16 @@ def low_load_factor(alpha: np.ndarray, c: float, q: float, speed_rpm: np.ndarray
     the exponent q shapes the curve. Ke(1) = 1, Ke → 0 as α → 0. The no-load running torque
     rises with input speed (seed 000 p.023: efficiency depends on input speed), so
     c_n = c·(n/``KE_REFERENCE_SPEED_RPM``)^s; s = 0 (or no speed given) is a speed-free Ke.
+    A drag torque also grows with the oil's viscosity: × g^k, g = ν(t)/ν(20 °C) (``viscosity``;
+    k = 0 a drag independent of temperature; Palmgren's no-load torque ∝ (ν·n)^(2/3)).
+
+    References: Palmgren, A. (1959) Ball and Roller Bearing Engineering, 3rd ed., SKF.
     """
     a = np.minimum(np.asarray(alpha, dtype=float), 1.0)
     if speed_rpm is not None and s != 0.0:
         c = c * (np.asarray(speed_rpm, dtype=float) / KE_REFERENCE_SPEED_RPM) ** s
+    if viscosity is not None and k != 0.0:
+        c = c * np.asarray(viscosity, dtype=float) ** k
     return (a * (1.0 + c) / (a + c)) ** q
 
 

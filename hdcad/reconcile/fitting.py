@@ -81,6 +81,7 @@ class Problem:
     # share u of the viscous loss at t_ref that grows with speed: 0 while effects are named,
     # fitted once they are (refine.refine_viscosity)
     speed_loss: float = 0.0
+    drag_viscosity_exponent: float = 0.0  # k of the low-load drag ∝ ν^k beside a temperature law
     # knee torque T_k [N·m] of a housing spring that stiffens (effects.progressive_twist):
     # ∞ (linear) while effects are named, fitted once they are (springs.stiffening)
     housing_knee: float = math.inf
@@ -272,7 +273,8 @@ def columns(problem: Problem, effects: tuple[str, ...], theta: dict[str, float],
             add(name, te_labels(problem.te_order)[:block.shape[1]], block)
         elif name == "low_load_efficiency":
             f = fx.low_load_factor(inp["alpha"], th["c"], th["q"], inp["input_speed_rpm"],
-                                   th["s"])
+                                   th["s"], _viscosity(problem, effects, theta, inp),
+                                   problem.drag_viscosity_exponent)
             factor = f if factor is None else factor * f
         elif name == "temperature_dependence":
             f = fx.temperature_factor(inp["temperature_C"], th["a"], th["b"],
@@ -284,6 +286,17 @@ def columns(problem: Problem, effects: tuple[str, ...], theta: dict[str, float],
     if factor is not None:  # η = η0·Ke(α)·F(t): the effects scale the whole efficiency
         X = X * factor[:, None]
     return X, labels, np.array(lower), np.array(upper)
+
+
+def _viscosity(problem: Problem, effects: tuple[str, ...], theta: dict, inp: dict
+               ) -> np.ndarray | None:
+    """ν(t)/ν(20 °C) of the named temperature law on the rows of ``inp``, for a drag that
+    grows with viscosity."""
+    if not problem.drag_viscosity_exponent or "temperature_dependence" not in effects:
+        return None
+    return fx.viscosity_ratio(inp["temperature_C"],
+                              theta[key_of("temperature_dependence", "b")],
+                              fx.REFERENCE_TEMPERATURE_C, problem.viscosity_C)
 
 
 def solve(X: np.ndarray, y: np.ndarray, lower: np.ndarray, upper: np.ndarray) -> np.ndarray:

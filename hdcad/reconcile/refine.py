@@ -1,6 +1,7 @@
 """Refinements of the named model once the effects are chosen: how closely the transmission
-error follows its slow modulation, the joint's spring on the catalog curve, and the
-temperature law's viscosity law and speed term.
+error follows its slow modulation, the joint's spring on the catalog curve, the
+temperature law's viscosity law and speed term, and a low-load drag that grows with the
+oil's viscosity.
 
 None changes which effects are named; each makes the reconciled model follow the data as
 closely as the physics and the noise allow, and says what it chose in the notes.
@@ -27,6 +28,9 @@ _MAX_EVALUATIONS = 12
 _SCREEN_EVALUATIONS = 4
 _SCAN_STEP = 0.02  # stiffness scale
 _SPEED_LOSS_BOUNDS = (-0.5, 0.9)  # as the viscous share a of the temperature law
+# exponent k of a drag ∝ ν^k: 0 (no coupling) … 2 (Petroff's viscous torque is ∝ ν; a
+# rolling bearing's no-load torque ∝ ν^(2/3), Palmgren)
+_DRAG_VISCOSITY_BOUNDS = (0.0, 2.0)
 
 
 def refine_te_order(problem: Problem, fit: Fit) -> Fit:
@@ -119,7 +123,7 @@ def refine_viscosity(problem: Problem, fit: Fit) -> Fit:
     best, law = fit_viscosity_law(problem, fit)
     problem.notes.append(f"viscosity law: {law} (C = {problem.viscosity_C:g} °C), the best "
                          f"of {', '.join(fx.VISCOSITY_LAWS_C)} on these data")
-    return _speed_loss(problem, best)
+    return _viscous_drag(problem, _speed_loss(problem, best))
 
 
 def fit_viscosity_law(problem: Problem, fit: Fit) -> tuple[Fit, str]:
@@ -145,22 +149,43 @@ def _speed_loss(problem: Problem, fit: Fit) -> Fit:
     every speed."""
     if fit.theta.get("temperature_dependence.s", 0.0) == 0.0:
         return fit  # no speed in the law: u would have nothing to act on
+    return _one_more(problem, fit, "speed_loss", _SPEED_LOSS_BOUNDS, lambda u: (
+        f"temperature law: the viscous loss at {fx.REFERENCE_TEMPERATURE_C:g} °C grows with "
+        f"speed too (u = {u:.3g} of the input power at {fx.KE_REFERENCE_SPEED_RPM:g} r/min, "
+        "× (n/n_ref)^s − 1)"))
 
-    def trial(u: float) -> Fit:
-        problem.speed_loss = float(u)
+
+def _viscous_drag(problem: Problem, fit: Fit) -> Fit:
+    """A named low-load factor whose drag grows with the oil's viscosity (× g^k, the
+    temperature law's g; ``drag_viscosity_exponent`` k, one parameter more), kept when BIC
+    prefers it. A drag torque is a viscous loss too (Palmgren: ∝ (ν·n)^(2/3)), so the
+    efficiency at low load falls further in a cold gear: the two effects do not multiply
+    independently."""
+    if not {"low_load_efficiency", "temperature_dependence"} <= set(fit.effects):
+        return fit
+    return _one_more(problem, fit, "drag_viscosity_exponent", _DRAG_VISCOSITY_BOUNDS,
+                     lambda k: "low-load factor: its drag grows with the oil's viscosity "
+                               f"(no-load loss × (ν/ν(20 °C))^{k:.3g}; Palmgren)")
+
+
+def _one_more(problem: Problem, fit: Fit, attribute: str, bounds: tuple[float, float],
+              note) -> Fit:
+    """``fit`` with one more term, the scalar ``problem.attribute`` searched within
+    ``bounds`` with the shapes refitted, kept (and ``note(value)`` added) when BIC with the
+    effective sample size prefers it; else ``fit`` with the attribute back at 0."""
+
+    def trial(value: float) -> Fit:
+        setattr(problem, attribute, float(value))
         return fit_model(problem, fit.effects, fit.theta)
 
-    lo, hi = _SPEED_LOSS_BOUNDS
-    found = minimize_scalar(lambda u: trial(u).rss, bounds=(lo, hi), method="bounded",
+    found = minimize_scalar(lambda v: trial(v).rss, bounds=bounds, method="bounded",
                             options={"xatol": 1e-3, "maxiter": 20})
     wider = trial(found.x)
     n_eff = _effective_n(problem, wider.residual(problem))
     if _bic_best({False: (fit.rss, 0), True: (wider.rss, 1)}, n_eff) is False:
-        problem.speed_loss = 0.0
+        setattr(problem, attribute, 0.0)
         return fit
-    problem.notes.append(f"temperature law: the viscous loss at {fx.REFERENCE_TEMPERATURE_C:g} "
-                         f"°C grows with speed too (u = {found.x:.3g} of the input power at "
-                         f"{fx.KE_REFERENCE_SPEED_RPM:g} r/min, × (n/n_ref)^s − 1)")
+    problem.notes.append(note(found.x))
     return replace(wider, n_params=wider.n_params + 1)
 
 
