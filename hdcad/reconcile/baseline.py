@@ -246,7 +246,7 @@ def efficiency(data: dict, model: GearModel, catalog: Catalog) -> Baseline:
     free, names, units = _offset(len(torque)), ("eta0",), ("%",)
     if np.ptp(speed) > 0 and np.all(speed > 0):
         free = np.column_stack([free, np.log(speed / SPEED_REFERENCE_RPM)])
-        names, units = names + ("eta_speed",), units + ("%",)
+        names, units = names + ("eta_speed",), units + ("%/ln(n/1000 r/min)",)
     return Baseline("efficiency", data["efficiency_pct"], np.zeros_like(torque),
                     free, names, units, "%", figures, notes,
                     {"alpha": torque / tr, "temperature_C": data["temperature_C"],
