@@ -5,8 +5,10 @@ instead of a traceback (the interpreter's own start-up is the only window left).
 from __future__ import annotations
 
 import signal
+import sys
 
 caught: list[int] = []
+reported: list[bool] = []  # the command line printed "hdcad: interrupted"
 
 
 def remember(signum, frame) -> None:
@@ -16,5 +18,17 @@ def remember(signum, frame) -> None:
 def run() -> int:
     if signal.getsignal(signal.SIGINT) is signal.default_int_handler:
         signal.signal(signal.SIGINT, remember)
-    from .cli import main
-    return main()
+    try:
+        try:
+            from .cli import main
+            code = main()
+        finally:
+            # the answer is given: a Ctrl-C still pending (the interpreter runs a signal's
+            # handler at its next chance, even after main returned) must not turn the exit
+            # code into a death by SIGINT; an ignored signal's pending handler is skipped
+            signal.signal(signal.SIGINT, signal.SIG_IGN)
+    except KeyboardInterrupt:  # raised between main's return and the line above
+        if not reported:
+            print("hdcad: interrupted", file=sys.stderr)
+        code = 130
+    return code

@@ -387,6 +387,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         return EXIT_INPUT
     except KeyboardInterrupt:
         print("hdcad: interrupted", file=sys.stderr)
+        _entry.reported.append(True)
         return EXIT_INTERRUPTED
     except BrokenPipeError:
         # the reader closed the pipe (`hdcad catalog | head`): what it wanted was printed
@@ -398,6 +399,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     except Exception as exc:  # noqa: BLE001 - the contract: never a bare traceback
         if _interrupted:
             print("hdcad: interrupted", file=sys.stderr)
+            _entry.reported.append(True)
             return EXIT_INTERRUPTED
         if debug:
             import traceback

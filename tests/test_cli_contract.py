@@ -124,3 +124,33 @@ def test_ctrl_c_during_a_design_leaves_nothing_behind(tmp_path, delay_s):
         pytest.skip("the design finished before the interrupt (a very fast machine)")
     assert proc.returncode == 130, err
     assert err.strip() == "hdcad: interrupted" and os.listdir(tmp_path) == []
+
+
+def test_a_ctrl_c_after_the_answer_is_given_keeps_exit_130(monkeypatch, capsys):
+    """A Ctrl-C whose handler runs only after the command line answered (the interpreter runs
+    a pending signal's handler at its next chance) must not end in a death by SIGINT or a
+    second message: the console entry returns 130 with one line, and ignores SIGINT from
+    then on."""
+    from hdcad import _entry, cli
+
+    def answered_then_interrupted(argv=None):
+        print("hdcad: interrupted", file=sys.stderr)
+        _entry.reported.append(True)
+        raise KeyboardInterrupt
+
+    saved = signal.getsignal(signal.SIGINT)
+    monkeypatch.setattr(_entry, "reported", [])
+    monkeypatch.setattr(cli, "main", answered_then_interrupted)
+    try:
+        assert _entry.run() == 130
+        assert signal.getsignal(signal.SIGINT) is signal.SIG_IGN
+    finally:
+        signal.signal(signal.SIGINT, saved)
+    assert capsys.readouterr().err == "hdcad: interrupted\n"
+    _entry.reported.clear()  # interrupted before the command line could answer
+    monkeypatch.setattr(cli, "main", lambda argv=None: (_ for _ in ()).throw(KeyboardInterrupt))
+    try:
+        assert _entry.run() == 130
+    finally:
+        signal.signal(signal.SIGINT, saved)
+    assert capsys.readouterr().err == "hdcad: interrupted\n"

@@ -202,3 +202,17 @@ def test_a_spring_that_stands_in_for_the_loop_s_narrowing_is_not_named(suite, na
     result = bench.reconcile_case(case)
     assert result["missing_effects"] == ["hysteresis"]
     assert any("the loop's own narrowing" in note for note in result["notes"])
+
+
+def test_a_drift_named_where_the_temperature_rose_with_time_gives_the_temperature_reading():
+    """Suite F's Reynolds temperature single (seed 7, 2 per cell) ran its temperatures in test
+    order (correlation with time 0.97): a drift of the rig with time fits as well as the
+    temperature law (ΔBIC 96.6 against 96.1) and is named; the report must give the other
+    reading, the efficiency's change with temperature."""
+    case = next(c for c in suite_cases(suite_path("f"), 7, 2)
+                if c.name == "f-efficiency-single-temperature_dependence-reynolds-mult-117")
+    result = bench.reconcile_case(case)
+    assert "thermal_drift" in [m["effect"] for m in result["measurement_effects"]]
+    assert any("temperature_dependence" in r.get("effects", [])
+               and r.get("measurement") == "thermal_drift"
+               for r in result["equivalent_readings"])

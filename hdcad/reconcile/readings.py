@@ -159,7 +159,9 @@ def equivalent(problem: Problem, fit: Fit, named: tuple[str, ...], found: list[d
         out.append({"effects": ["te_1x"], "measurement": "encoder_eccentricity",
                     "text": "once per WG revolution: the gear's transmission error, or an "
                             "eccentric input encoder (the data read the same)"})
-    if problem.kind == "efficiency" and "temperature_dependence" in named:
+    # both ways: a temperature law named, or a drift with time named in its place
+    if problem.kind == "efficiency" and ("temperature_dependence" in named
+                                         or "thermal_drift" in fit.effects):
         t = problem.base.inputs["temperature_C"]
         u = problem.base.inputs["record_position"]
         if np.ptp(t) > 0 and abs(np.corrcoef(t, u)[0, 1]) > TIME_TEMPERATURE_CORRELATION:
