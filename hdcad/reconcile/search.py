@@ -216,7 +216,6 @@ def _pair(problem: Problem, start: Fit, fa: Fit, fb: Fit, fit: Fit, sigma: float
         elif ok and not _beyond_law(problem, member, other, fit, sigma, tau):
             ok, reason = False, (f"{member} adds too little to {other.effects[-1]} with its "
                                  "viscosity law fitted")
-
     # the member that explains more alone is named first
     order = (a, b) if fa.rss <= fb.rss else (b, a)
     return Candidate(order, fit, g, ok, reason)
