@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from truth_runs import bench, case_run, suite_cases, suite_path
+from truth_runs import bench, case_run, named_case
 
 from hdcad.reconcile import effects as fx
 
@@ -63,8 +63,7 @@ def test_an_outlier_hidden_by_the_effects_is_left_out_of_the_named_model():
     order, is as rough as noise to the neighbours and hides it; on the named model's
     residual it stands out and is left out (before: RMSE 1.65× the noise, 0.99× without
     that one row)."""
-    case = next(c for c in suite_cases(suite_path("c"), 11, 2)
-                if c.name == "c-efficiency-single-lowloadefficiency-dragtorque-000")
+    case = named_case("c", "c-efficiency-single-lowloadefficiency-dragtorque-000", 11)
     result = bench.reconcile_case(case)
     assert result["missing_effects"] == ["low_load_efficiency"]
     assert result["outliers"] == 1
@@ -99,7 +98,7 @@ def test_a_low_load_drag_coupled_to_the_viscosity_is_followed_to_the_noise(suite
     """Suites D and F make the low-load drag a viscous loss (it grows as the oil thickens),
     so low-load and temperature effects do not multiply independently; with the drag × g^k
     (k chosen by BIC) the pair leaves ≤ 1.2× the noise (2 per cell)."""
-    case = next(c for c in suite_cases(suite_path(suite), seed, 2) if c.name == name)
+    case = named_case(suite, name, seed)
     result = bench.reconcile_case(case)
     assert set(result["missing_effects"]) == set(case.gear_effects)
     assert result["rmse_after"] <= 1.2 * case.noise_rms

@@ -14,7 +14,7 @@ The Bouc–Wen + housing pair of suite B (``truths/truth_b.py``, the session's s
 from __future__ import annotations
 
 import pytest
-from truth_runs import bench, case_run, suite_cases, suite_path
+from truth_runs import bench, case_run, named_case, suite_cases, suite_path
 
 from hdcad.reconcile.search import Candidate, Gate, _unless_ambiguous, ambiguous_second
 
@@ -83,15 +83,10 @@ def test_a_modulated_first_error_does_not_hide_a_second_harmonic():
     own modulation (4σ), and te_2x explains too little of that to pass the share rule.
     Against te_1x with its modulation followed (order by BIC) te_2x still earns its place:
     both named, and the residual at the noise (1.2σ, the suites' acceptance bar)."""
-    case = next(c for c in suite_cases(suite_path("c"), 7, 2)
-                if c.name == "c-transmission-pair-te1xte2x-amam-000")
+    case = named_case("c", "c-transmission-pair-te1xte2x-amam-000", 7)
     result = bench.reconcile_case(case)
     assert result["missing_effects"] == ["te_1x", "te_2x"]
     assert result["rmse_after"] <= 1.2 * case.noise_rms
-
-
-def _suite_c_case(name: str, seed: int = 7):
-    return next(c for c in suite_cases(suite_path("c"), seed, 2) if c.name == name)
 
 
 def _stiffening_reading(result) -> bool:
@@ -106,7 +101,7 @@ def test_a_stiffening_housing_spring_is_not_read_as_backlash(index):
     (FD table 314-1). Weighed against a spring that stiffens, it is the housing spring (with
     its knee torque), and the backlash is printed as the other reading. Both cases were
     named backlash before."""
-    case = _suite_c_case(f"c-torsion-single-housingcompliance-cubic-00{index}")
+    case = named_case("c", f"c-torsion-single-housingcompliance-cubic-00{index}", 7)
     result = bench.reconcile_case(case)
     assert result["missing_effects"] == ["housing_compliance"]
     assert _stiffening_reading(result)
@@ -119,7 +114,7 @@ def test_a_stiffening_spring_behind_a_sharp_backlash_is_named_second():
     """Suite C's tanh backlash + cubic housing pair (seed 11): the linear housing spring adds
     nothing over the backlash (the stiffness scale takes a linear compliance), a stiffening
     one adds ΔBIC ≈ 80–140; it was named backlash alone before."""
-    case = _suite_c_case("c-torsion-pair-backlashhousingcompliance-tanhcubic-000", seed=11)
+    case = named_case("c", "c-torsion-pair-backlashhousingcompliance-tanhcubic-000", 11)
     result = bench.reconcile_case(case)
     assert result["missing_effects"] == ["backlash", "housing_compliance"]
     assert "T_k" in result["steps"][1]["params"]
@@ -140,8 +135,8 @@ def test_a_low_load_factor_is_not_named_for_the_viscosity_law_s_shape():
     exponential names the temperature dependence and leaves the curvature of Andrade's law,
     which a low-load factor took as a second effect. Against the temperature law with its
     best viscosity law the factor adds too little: the temperature dependence alone."""
-    case = next(c for c in suite_cases(suite_path("e"), 11, 2)
-                if c.name == "e-efficiency-single-temperature_dependence-andrade-palmgren-091")
+    case = named_case("e", "e-efficiency-single-temperature_dependence-andrade-palmgren-091",
+                      11)
     result = bench.reconcile_case(case)
     assert result["missing_effects"] == ["temperature_dependence"]
     assert result["rmse_after"] <= 1.2 * case.noise_rms
@@ -153,8 +148,8 @@ def test_a_loop_through_the_gear_beside_a_spring_of_its_own_keeps_the_pair():
     series (ΔBIC −5.6), but with the loop narrowing where the gear stiffens (its width × the
     catalog curve's local compliance) the pair beats the series element by ΔBIC 84: the
     spring is the housing's own and both are named."""
-    case = next(c for c in suite_cases(suite_path("e"), 11, 2) if c.name ==
-                "e-torsion-pair-hysteresis+housing_compliance-jiles-atherton-tapered-preload-025")
+    case = named_case("e", "e-torsion-pair-hysteresis+housing_compliance-jiles-atherton-"
+                           "tapered-preload-025", 11)
     result = bench.reconcile_case(case)
     assert set(result["missing_effects"]) == {"hysteresis", "housing_compliance"}
     assert not _series_reading(result)
@@ -178,7 +173,7 @@ def test_an_efficiency_level_that_changes_with_speed_is_the_catalog_s_nuisance(s
     """The catalog's efficiency curves are given per input speed (seed 000 p.023): a level
     that changes with speed belongs to the baseline, so a temperature law is named for the
     temperature and a low-load factor for the load (seed 11, 2 per cell)."""
-    case = next(c for c in suite_cases(suite_path(suite), 11, 2) if c.name == name)
+    case = named_case(suite, name, 11)
     result = bench.reconcile_case(case)
     assert result["missing_effects"] == named
     assert result["rmse_after"] <= 1.2 * case.noise_rms
@@ -198,7 +193,7 @@ def test_a_spring_that_stands_in_for_the_loop_s_narrowing_is_not_named(suite, na
     was named second; it adds too little beside the loop through the gear's compliance, so
     only the hysteresis is named (suites E and F: wrong second names 7 → 0 at seeds 7 and
     11; at seed 13, kept out of the choice, C 3 → 2, E 2 → 0, F 4 → 1)."""
-    case = next(c for c in suite_cases(suite_path(suite), 11, 2) if c.name == name)
+    case = named_case(suite, name, 11)
     result = bench.reconcile_case(case)
     assert result["missing_effects"] == ["hysteresis"]
     assert any("the loop's own narrowing" in note for note in result["notes"])
@@ -209,8 +204,7 @@ def test_a_drift_named_where_the_temperature_rose_with_time_gives_the_temperatur
     order (correlation with time 0.97): a drift of the rig with time fits as well as the
     temperature law (ΔBIC 96.6 against 96.1) and is named; the report must give the other
     reading, the efficiency's change with temperature."""
-    case = next(c for c in suite_cases(suite_path("f"), 7, 2)
-                if c.name == "f-efficiency-single-temperature_dependence-reynolds-mult-117")
+    case = named_case("f", "f-efficiency-single-temperature_dependence-reynolds-mult-117", 7)
     result = bench.reconcile_case(case)
     assert "thermal_drift" in [m["effect"] for m in result["measurement_effects"]]
     assert any("temperature_dependence" in r.get("effects", [])

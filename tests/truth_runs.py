@@ -33,6 +33,11 @@ def suite_path(suite: str) -> Path:
     return ROOT / "truths" / f"truth_{suite}.py"
 
 
+def named_case(suite: str, name: str, seed: int, per_cell: int = 2):
+    """The case called ``name`` in suite ``suite`` (b … f) drawn at ``seed``, ``per_cell``."""
+    return next(c for c in suite_cases(suite_path(suite), seed, per_cell) if c.name == name)
+
+
 @functools.lru_cache(maxsize=None)
 def suite_runs(path: Path) -> tuple[list, list[dict]]:
     """(cases, reconcile results) of the suite at ``path``, in the suite's order."""
