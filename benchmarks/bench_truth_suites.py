@@ -55,13 +55,13 @@ def load_suite(path: Path):
 def reconcile_case(case) -> dict:
     """Reconcile one truth case in-process; the JSON result plus the report's extra keys."""
     from hdcad.catalog import load_catalog
-    from hdcad.models import resolve
+    from hdcad.models import resolve_gear
     from hdcad.reconcile import reconcile, validate_data
 
     catalog = load_catalog()
-    try:
+    try:  # the model as the command line reads it
         result = reconcile(case.kind, validate_data(case.kind, case.columns),
-                           resolve(case.model, catalog), catalog,
+                           resolve_gear(case.model, catalog)[0], catalog,
                            load_inertia_kgm2=case.load_inertia_kgm2).as_dict()
     except Exception as exc:  # a refusal (e.g. wrong units) is a result, not a crash
         result = {"error": f"{type(exc).__name__}: {exc}", "missing_effects": [],

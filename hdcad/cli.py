@@ -185,11 +185,11 @@ def _stage_printer(args):
 
 def cmd_reconcile(args) -> int:
     from .catalog import load_catalog
-    from .models import resolve
+    from .models import resolve_gear
     from .output import json_text, staged_dir, write_text_atomic
     from .reconcile import read_data, reconcile
     catalog = load_catalog(args.catalog_overlay)
-    model = resolve(args.model, catalog)
+    model, model_note = resolve_gear(args.model, catalog)
     if args.kind == "vibration" and args.load_inertia is None:
         raise InputError("--load-inertia", "vibration needs the load inertia [kg·m²]")
     if args.out is not None:
@@ -198,6 +198,8 @@ def cmd_reconcile(args) -> int:
         check_target(Path(args.out), args.force)
     data = read_data(args.kind, args.data)
     result = reconcile(args.kind, data, model, catalog, args.load_inertia)
+    if model_note:
+        result.notes.insert(0, model_note)
     print_reconciliation(result)
     if args.json:
         write_text_atomic(args.json, json_text(result.as_dict()))
@@ -320,7 +322,8 @@ def _parser() -> argparse.ArgumentParser:
                         "input_speed_rpm,output_vibration_rad")
     p.add_argument("data", metavar="DATA.csv", help="measured data, CSV with a header row, SI "
                                                     "units as in the column names")
-    p.add_argument("--model", required=True, help="model code, e.g. CSF-32-100-GH")
+    p.add_argument("--model", required=True, help="model code, e.g. CSF-32-100-GH; an FD gear "
+                   "may be given without its type (FD-25-80 reads as the unit FD-25-80-0)")
     p.add_argument("--load-inertia", type=_finite_positive, metavar="KGM2",
                    help="load inertia on the output [kg·m²] (vibration only)")
     p.add_argument("--json", metavar="FILE", help="also write the result as JSON")

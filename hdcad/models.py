@@ -124,6 +124,21 @@ def resolve(code: str, catalog: Catalog) -> GearModel:
     return model
 
 
+_FD_GEAR = re.compile(r"^FD-\d+-\d+$")
+
+
+def resolve_gear(code: str, catalog: Catalog) -> tuple[GearModel, str | None]:
+    """(model, note) for a command that needs only the gear (reconcile): an FD code without
+    its type is read as the unit (-0), whose gear data (ratio, rated torque, efficiency,
+    lost motion, spring constant) are the component set's (-2), and the note says so."""
+    text = code.strip().upper()
+    if not _FD_GEAR.match(text):
+        return resolve(code, catalog), None
+    model = resolve(f"{text}-0", catalog)
+    return model, (f"{text} read as {model.code}: the unit (-0) and the component set (-2) "
+                   "share the gear's data (tables 304-1, 310-1, 313, 314-1)")
+
+
 def _load_fd(model: GearModel, catalog: Catalog) -> None:
     rows = catalog.rows("fd_rated_torque", size=model.size, ratio=model.ratio)
     model.fd_torque_by_speed = sorted(

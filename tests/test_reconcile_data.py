@@ -171,6 +171,72 @@ def test_nothing_is_named_on_the_catalog_model_plus_noise():
     assert result.rmse_after == result.rmse_before
 
 
+def _torsion_triangle(T0, n, cycles=2):
+    """Quasi-static torque 0 → +T0 → −T0 … → 0 [N·m] over ``cycles`` cycles, ``n`` rows."""
+    knots = [0.0] + [T0 * (-1) ** k for k in range(2 * cycles)] + [0.0]
+    return np.interp(np.linspace(0, len(knots) - 1, n), np.arange(len(knots)), knots)
+
+
+def test_the_corner_width_is_found_when_the_noise_is_a_thousandth_of_the_twist():
+    """CSF-45-120-GH (T1 76, T2 275 N·m) with corners spread over 12 N·m, 10 % stiffer than
+    the catalog, ±450 N·m and noise 10⁻³ of the largest twist: the fit must walk from its grid
+    point to the width (the shape fit once stopped where it started, its gradient tolerance
+    absolute and the residual micro-radians, and named a backlash for what was left)."""
+    from hdcad.reconcile.baseline import catalog_twist, stiffness_curve
+    catalog = load_catalog()
+    model = resolve("CSF-45-120-GH", catalog)
+    torque = _torsion_triangle(450.0, 1200)
+    twist = catalog_twist(stiffness_curve(model)[0], torque, 12.0) / 1.1
+    sigma = 1e-3 * np.max(np.abs(twist))
+    data = {"torque_Nm": torque,
+            "twist_rad": twist + sigma * np.random.default_rng(5).standard_normal(len(torque))}
+    result = reconcile("torsion", data, model, catalog)
+    assert result.missing_effects == []
+    width = {n["name"]: n["value"] for n in result.nuisances}["corner_width"]
+    assert width == pytest.approx(12.0, rel=0.05)   # ±5 %: a few standard errors at this noise
+    assert result.rmse_after == pytest.approx(sigma, rel=0.1)
+
+
+def test_a_warm_up_drift_of_the_twist_is_the_rig_not_the_gear():
+    """A first-order warm-up (Newton's law of cooling) of the twist reading, 2×10⁻⁵ rad with a
+    time constant of a tenth of the test, on CSF-32-100-GH: the drift is named as the rig's and
+    follows the data to the noise; no gear effect."""
+    catalog = load_catalog()
+    model = resolve("CSF-32-100-GH", catalog)
+    from hdcad.reconcile.baseline import catalog_twist, stiffness_curve
+    torque = _torsion_triangle(137.0, 1500, cycles=3)
+    t = np.linspace(0.0, 1.0, len(torque))
+    sigma = 2e-6
+    twist = (catalog_twist(stiffness_curve(model)[0], torque, 5.0)
+             + 2e-5 * (1.0 - np.exp(-t / 0.1))
+             + sigma * np.random.default_rng(8).standard_normal(len(torque)))
+    result = reconcile("torsion", {"torque_Nm": torque, "twist_rad": twist}, model, catalog)
+    assert result.missing_effects == []
+    assert [m["effect"] for m in result.measurement_effects] == ["thermal_drift"]
+    assert result.rmse_after == pytest.approx(sigma, rel=0.1)
+
+
+def test_an_eccentric_input_encoder_reads_as_te_1x_not_as_the_record_s_time():
+    """The input angle read by an eccentric encoder, φ_m = φ + e·sin φ, against an output
+    that turns as φ/R (CSF-32-100-GH, 8 input revolutions at constant speed): the output's
+    error is −(e/R)·sin φ, once per WG revolution. The output's slope must stay near 1/R
+    (a gain error of the angle channel is small): with it free, the record's time stood in
+    for the input angle and a drift of 0.2 rad took the whole error."""
+    catalog = load_catalog()
+    phi = np.linspace(0.0, 16 * math.pi, 3000)
+    e, ratio, sigma = 3e-3, 100, 2e-6
+    data = {"input_angle_rad": phi + e * np.sin(phi),
+            "output_angle_rad": phi / ratio + sigma * np.random.default_rng(2).standard_normal(
+                len(phi))}
+    result = reconcile("transmission", data, resolve("CSF-32-100-GH", catalog), catalog)
+    assert result.missing_effects == ["te_1x"]
+    amplitude = result.steps[0].params["amplitude"]["value"]
+    assert amplitude == pytest.approx(e / ratio, rel=0.05)
+    assert any(r.get("measurement") == "encoder_eccentricity"
+               for r in result.equivalent_readings)
+    assert result.measurement_effects == []
+
+
 def test_region_verdicts_read_before_and_after():
     from hdcad.reconcile.report import region_verdict
     assert region_verdict(True, False) == "disagreed → explained"

@@ -103,3 +103,49 @@ def test_a_low_load_drag_coupled_to_the_viscosity_is_followed_to_the_noise(suite
     assert set(result["missing_effects"]) == set(case.gear_effects)
     assert result["rmse_after"] <= 1.2 * case.noise_rms
     assert any("its drag grows with the oil's viscosity" in n for n in result["notes"])
+
+
+def test_a_play_held_by_friction_is_crossed_past_its_holding_torque():
+    """Backlash 0.2 mrad held by friction until the load passes ±6 N·m in the new direction
+    (Karnopp's stuck side), on CSF-32-100-GH's catalog curve with noise 2 µrad: the backlash is
+    named, the holding torque found within 10 % and the residual left at the noise."""
+    from hdcad.catalog import load_catalog
+    from hdcad.models import resolve
+    from hdcad.reconcile import reconcile
+    from hdcad.reconcile.baseline import catalog_twist, stiffness_curve
+    catalog = load_catalog()
+    model = resolve("CSF-32-100-GH", catalog)
+    knots = [0.0, 137.0, -137.0, 137.0, -137.0, 0.0]
+    torque = np.interp(np.linspace(0, 5, 1500), np.arange(6), knots)
+    direction = np.sign(np.gradient(torque))
+    sigma = 2e-6
+    twist = (catalog_twist(stiffness_curve(model)[0], torque, 5.0)
+             + 1e-4 * np.tanh((torque - 6.0 * direction) / 1.5)
+             + sigma * np.random.default_rng(4).standard_normal(len(torque)))
+    result = reconcile("torsion", {"torque_Nm": torque, "twist_rad": twist}, model, catalog)
+    assert result.missing_effects == ["backlash"]
+    note = next(n for n in result.notes if "held by friction" in n)
+    held = float(note.split("passes ")[1].split(" N·m")[0])
+    assert held == pytest.approx(6.0, rel=0.1)
+    assert result.rmse_after == pytest.approx(sigma, rel=0.1)
+
+
+@pytest.mark.parametrize("suite,seed,name,left", [
+    # friction-held play: 2.16× the noise left by a play crossed at zero torque, now 1.02×
+    ("e", 7, "e-torsion-single-backlash-friction-play-012", 1.2),
+    # Karnopp stiction play, breakaway 1 N·m: 1.18× → 1.04×
+    ("f", 11, "f-torsion-single-backlash-karnopp-stiction-play-023", 1.2),
+    # breakaway 21.4 N·m, read as held to 7.3 N·m: 1.44× → 1.23× (the stuck play's release
+    # is not the smooth crossing of this form)
+    ("f", 11, "f-torsion-single-backlash-karnopp-stiction-play-022", 1.3),
+])
+def test_a_play_held_by_friction_in_the_truth_suites_is_followed_closer(suite, seed, name,
+                                                                        left):
+    """Suites E and F hold the play at one side by friction until the load passes a
+    breakaway torque; with the holding torque fitted once backlash is named (kept by BIC) the
+    single leaves the noise or close to it (2 per cell)."""
+    case = named_case(suite, name, seed)
+    result = bench.reconcile_case(case)
+    assert result["missing_effects"] == ["backlash"]
+    assert result["rmse_after"] <= left * case.noise_rms
+    assert any("held by friction" in n for n in result["notes"])

@@ -34,7 +34,7 @@ def suite_path(suite: str) -> Path:
 
 
 def named_case(suite: str, name: str, seed: int, per_cell: int = 2):
-    """The case called ``name`` in suite ``suite`` (b … f) drawn at ``seed``, ``per_cell``."""
+    """The case called ``name`` in suite ``suite`` (b … g) drawn at ``seed``, ``per_cell``."""
     return next(c for c in suite_cases(suite_path(suite), seed, per_cell) if c.name == name)
 
 

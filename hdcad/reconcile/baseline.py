@@ -181,6 +181,13 @@ NUISANCE = {"torsion": (Parameter(
     "corner_width", "N·m", "torque width over which the compliance changes at T1 and T2",
     0.01, 1.0, "T1"),)}
 
+# Largest gain error of the output angle channel read as the sensor's (transmission): the
+# ratio is exact, so a slope error is the channel's; a unit error (degrees, ×57.3) is found
+# before the fit, and a slope of the output nowhere near 1/R is not a gain error (an input
+# angle read with its own error, e.g. an eccentric input encoder, must not trade the input
+# for the record's time).
+ANGLE_GAIN_LIMIT = 0.2
+
 # Input speed at which the efficiency level η0 is given [r/min] (the speed nuisance's zero).
 SPEED_REFERENCE_RPM = 1000.0
 

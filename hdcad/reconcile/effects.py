@@ -169,6 +169,35 @@ def hysteresis_state(torque_Nm: np.ndarray, T_s: float, rho: float, n: float = 1
     return z
 
 
+def _steady_start(T_s: float, rho: float, n: float, T0: float, table) -> float:
+    """z at −T0 of steady cycles between ±T0 (the loop closes on itself)."""
+    w0 = -1.0
+    v = np.array([2.0 * T0 / T_s])
+    for _ in range(500):
+        w = _bouc_wen_branch(v, w0, table)
+        if abs(-w[-1] - w0) < 1e-12:
+            break
+        w0 = -float(w[-1])
+    return w0
+
+
+def loop_centre(torque_Nm: np.ndarray, T_s: float, rho: float, n: float, T0: float
+                ) -> np.ndarray:
+    """Centre line of the steady major loop between ±T0 [N·m], in units of z, at T.
+
+    Half the sum of the loading branch z↑(T) and the unloading one z↓(T) = −z↑(−T): the
+    backbone a Bouc–Wen loop adds to the twist besides its width. A gear whose catalog curve
+    is the centre of its own loop (the average of loading and unloading) has the loop
+    z − centre about that curve.
+    """
+    table = _bouc_wen_table(rho, n)
+    w0 = _steady_start(T_s, rho, n, T0, table)
+    t = np.clip(np.asarray(torque_Nm, dtype=float), -T0, T0)
+    grid = np.linspace(-T0, T0, 401)
+    up = _bouc_wen_branch((grid + T0) / T_s, w0, table)
+    return 0.5 * (np.interp(t, grid, up) - np.interp(-t, grid, up))
+
+
 def hysteresis_loss(z_sat_rad: float, T_s: float, rho: float, n: float, T0: float) -> float:
     """Loop width at zero torque B − B′ [rad] of steady cycles between ±T0 [N·m].
 
@@ -177,14 +206,8 @@ def hysteresis_loss(z_sat_rad: float, T_s: float, rho: float, n: float, T0: floa
     hysteresis loss (seed 000 p.020) is this width for T0 = rated torque.
     """
     table = _bouc_wen_table(rho, n)
-    w0 = -1.0
-    v = np.array([T0 / T_s, 2.0 * T0 / T_s])
-    for _ in range(500):
-        w = _bouc_wen_branch(v, w0, table)
-        if abs(-w[1] - w0) < 1e-12:
-            break
-        w0 = -w[1]
-    return 2.0 * z_sat_rad * float(w[0])
+    w0 = _steady_start(T_s, rho, n, T0, table)
+    return 2.0 * z_sat_rad * float(_bouc_wen_branch(np.array([T0 / T_s]), w0, table)[0])
 
 
 def backlash_twist(torque_Nm: np.ndarray, lost_motion_rad: float, width_Nm: float) -> np.ndarray:
@@ -193,9 +216,26 @@ def backlash_twist(torque_Nm: np.ndarray, lost_motion_rad: float, width_Nm: floa
     A clearance b lets the output move b with (almost) no torque; seen as twist against
     torque it is a step of height b at T = 0, smoothed over a torque width T_w (the contact
     closes gradually). Odd and single-valued in T: unlike hysteresis, it does not depend on
-    the direction of loading.
+    the direction of loading. A play held by friction is crossed only once the load passes
+    the holding torque T_h in the new direction: T − d·T_h (d = +1 loading, −1 unloading;
+    fitted once backlash is named, :func:`hdcad.reconcile.refine.refine_play`).
+
+    References: Karnopp, D. (1985) "Computer simulation of stick-slip friction in mechanical
+    dynamic systems", J. Dyn. Syst. Meas. Control 107: 100-103 (the stuck side held until
+    the force passes the breakaway level).
     """
     return 0.5 * lost_motion_rad * np.tanh(torque_Nm / width_Nm)
+
+
+def branch_direction(n: int, branches: tuple[np.ndarray, int]) -> np.ndarray:
+    """+1 on the rows of loading branches, −1 on unloading ones (``branches`` as from
+    :func:`turning_points`: branch start indices and the first branch's direction)."""
+    starts, first = branches
+    out = np.empty(n)
+    bounds = list(starts) + [n]
+    for k, (s, e) in enumerate(zip(bounds[:-1], bounds[1:])):
+        out[s:e] = first * (-1) ** k
+    return out
 
 
 def compliance_twist(torque_Nm: np.ndarray, stiffness_Nm_per_rad: float) -> np.ndarray:

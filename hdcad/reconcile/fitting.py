@@ -75,6 +75,9 @@ class Problem:
     # times the curve's local compliance (the loop narrows where the gear stiffens); the
     # constant-compliance form names the effect, this one is tried once it is named
     hysteresis_through_gear: bool = False
+    # hysteresis as a loop about the catalog curve (its centre line taken out: the catalog
+    # curve is the mean of loading and unloading) instead of a loop with its own backbone
+    hysteresis_centred: bool = False
     # constant C [°C] of the viscosity–temperature law (effects.VISCOSITY_LAWS_C): Reynolds'
     # while effects are named, the law that fits best once they are (refine.refine_viscosity)
     viscosity_C: float = math.inf
@@ -85,6 +88,10 @@ class Problem:
     # knee torque T_k [N·m] of a housing spring that stiffens (effects.progressive_twist):
     # ∞ (linear) while effects are named, fitted once they are (springs.stiffening)
     housing_knee: float = math.inf
+    # torque that holds a play at one side until the load passes it, as a share of T0
+    # (effects.backlash_twist): 0 while effects are named, fitted once backlash is
+    # (refine.refine_play)
+    play_hold: float = 0.0
     cache: dict = field(default_factory=dict)
 
     @property
@@ -179,7 +186,7 @@ def nonlinear(kind: str, effects: tuple[str, ...]) -> dict[str, fx.Parameter]:
 
 def parameters_of(name: str, kind: str) -> tuple[fx.Parameter, ...]:
     if name in rig.RIG_EFFECTS:
-        return ()
+        return rig.RIG_EFFECTS[name].nonlinear
     return fx.nonlinear_parameters(name, kind)
 
 
@@ -237,10 +244,10 @@ def columns(problem: Problem, effects: tuple[str, ...], theta: dict[str, float],
     # the compliance scale stays within the catalog's spread: beyond it the data ask for an
     # effect (or, for a stiffer gear, the nuisance report says so)
     spread = baselines.STIFFNESS_SPREAD
-    lower = [1 / (1 + spread) if n_ == "compliance_scale" else -np.inf
-             for n_ in base.free_names]
-    upper = [1 / (1 - spread) if n_ == "compliance_scale" else np.inf
-             for n_ in base.free_names]
+    bounds = {"compliance_scale": (1 / (1 + spread), 1 / (1 - spread)),
+              "scale_error": (-baselines.ANGLE_GAIN_LIMIT, baselines.ANGLE_GAIN_LIMIT)}
+    lower = [bounds.get(n_, (-np.inf, np.inf))[0] for n_ in base.free_names]
+    upper = [bounds.get(n_, (-np.inf, np.inf))[1] for n_ in base.free_names]
 
     def add(effect: str, names, block, lo=-np.inf, hi=np.inf):
         cols.append(block.reshape(n, -1))
@@ -252,11 +259,14 @@ def columns(problem: Problem, effects: tuple[str, ...], theta: dict[str, float],
     for name in effects:
         th = {p.name: theta[key_of(name, p.name)] for p in parameters_of(name, problem.kind)}
         if name in rig.RIG_EFFECTS:
-            names, block = rig.columns(name, inp, problem.step_position)
+            names, block = rig.columns(name, inp, problem.step_position, th)
             add(name, names, block)
         elif name == "hysteresis":
             z = fx.hysteresis_state(inp["torque_Nm"], th["T_s"], th["rho"], th["n"], branches,
                                     th["z0"], th["first_scale"])
+            if problem.hysteresis_centred:
+                z = z - fx.loop_centre(inp["torque_Nm"], th["T_s"], th["rho"], th["n"],
+                                       problem.scales["T0"])
             if problem.hysteresis_series:
                 z = z - inp["torque_Nm"] / th["T_s"]
             elif problem.hysteresis_through_gear:  # friction torque × the gear's compliance
@@ -264,7 +274,11 @@ def columns(problem: Problem, effects: tuple[str, ...], theta: dict[str, float],
                     problem.base.curve, inp["torque_Nm"], theta.get("catalog.corner_width", 0.0))
             add(name, ["z_sat"], -z, 0.0)
         elif name == "backlash":
-            add(name, ["lost_motion"], fx.backlash_twist(inp["torque_Nm"], 1.0, th["T_w"]), 0.0)
+            torque = inp["torque_Nm"]
+            if problem.play_hold:
+                torque = torque - fx.branch_direction(len(torque), branches) * (
+                    problem.play_hold * problem.scales["T0"])
+            add(name, ["lost_motion"], fx.backlash_twist(torque, 1.0, th["T_w"]), 0.0)
         elif name == "housing_compliance":
             add(name, ["compliance"], fx.progressive_twist(inp["torque_Nm"],
                                                            problem.housing_knee), 0.0)
@@ -405,11 +419,15 @@ def _polish(problem, effects, theta, keys, params, scale):
         return {**theta, **{k: (math.exp(v) if f[0] else float(v))
                             for k, v, f in zip(keys, x, forms)}}
 
-    def residual(x):
+    def raw(x):
         Xf, beta, *_ = _evaluate(problem, effects, from_x(x))
         return problem.y - Xf @ beta
 
     x0 = np.clip(to_x(theta), lo + 1e-9 * (hi - lo), hi - 1e-9 * (hi - lo))
+    # in the start's RMS: least_squares' gradient tolerance is absolute, and a residual of
+    # micro-radians would otherwise stop it at the start
+    unit = float(np.sqrt(np.mean(raw(x0) ** 2))) or 1.0
+    residual = lambda x: raw(x) / unit
     result = least_squares(residual, x0, bounds=(lo, hi), x_scale=np.maximum(hi - lo, 1e-9),
                            diff_step=1e-4, max_nfev=40 * len(keys))
     return from_x(result.x)

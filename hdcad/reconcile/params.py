@@ -23,6 +23,8 @@ def rig_params(problem: Problem, fit: Fit, effect: str) -> dict[str, dict]:
            for k, v in b.items() for p in RIG_EFFECTS[effect].parameters if p.name == k}
     if effect == "angle_offset":
         out["at_record_position"] = {"value": problem.step_position, "unit": "-"}
+    if effect == "thermal_drift":
+        out["tau"] = {"value": fit.theta["thermal_drift.tau"], "unit": "half-records"}
     if effect == "encoder_eccentricity":
         out["amplitude"] = {"value": math.hypot(b["a"], b["b"]), "unit": unit}
     return out

@@ -159,6 +159,11 @@ def equivalent(problem: Problem, fit: Fit, named: tuple[str, ...], found: list[d
         out.append({"effects": ["te_1x"], "measurement": "encoder_eccentricity",
                     "text": "once per WG revolution: the gear's transmission error, or an "
                             "eccentric input encoder (the data read the same)"})
+    if problem.kind == "transmission" and "te_2x" in named:
+        out.append({"effects": ["te_2x"], "measurement": "sensor_gain",
+                    "text": "twice per WG revolution: the gear's transmission error, or the "
+                            "input angle sensor's own 2× error (a resolver's sine/cosine gain "
+                            "imbalance, an elliptical encoder disc; the data read the same)"})
     # both ways: a temperature law named, or a drift with time named in its place
     if problem.kind == "efficiency" and ("temperature_dependence" in named
                                          or "thermal_drift" in fit.effects):

@@ -9,6 +9,7 @@ closely as the physics and the noise allow, and says what it chose in the notes.
 
 from __future__ import annotations
 
+import itertools
 import math
 from dataclasses import replace
 
@@ -31,6 +32,7 @@ _SPEED_LOSS_BOUNDS = (-0.5, 0.9)  # as the viscous share a of the temperature la
 # exponent k of a drag ∝ ν^k: 0 (no coupling) … 2 (Petroff's viscous torque is ∝ ν; a
 # rolling bearing's no-load torque ∝ ν^(2/3), Palmgren)
 _DRAG_VISCOSITY_BOUNDS = (0.0, 2.0)
+_PLAY_HOLD_BOUNDS = (0.0, 0.3)  # holding torque of a play, as a share of the largest torque
 
 
 def refine_te_order(problem: Problem, fit: Fit) -> Fit:
@@ -82,8 +84,8 @@ def refine(problem: Problem, fit: Fit) -> Fit:
     hysteresis through the gear's compliance."""
     curved = refine_spring(problem, fit)
     if curved is fit:
-        return refine_hysteresis(problem,
-                                 refine_viscosity(problem, refine_te_order(problem, fit)))
+        return refine_play(problem, refine_hysteresis(problem, refine_viscosity(
+            problem, refine_te_order(problem, fit))))
     return curved
 
 
@@ -91,27 +93,55 @@ THROUGH_GEAR = ("hysteresis: a friction torque in parallel with the gear's sprin
                 "the torque × the catalog curve's local compliance)")
 
 
+CENTRED = ("hysteresis: a loop about the catalog curve (the curve is the mean of loading "
+           "and unloading; the loop's own centre line taken out)")
+
+
 def refine_hysteresis(problem: Problem, fit: Fit) -> Fit:
-    """A named hysteresis read as a friction torque in parallel with the gear's spring:
-    its twist is the torque times the catalog curve's local compliance, so the loop narrows
-    past T1 and T2 where the gear stiffens (same parameters; kept when it fits better).
+    """A named hysteresis in whichever combination of the loop's forms fits best (same
+    parameters):
+
+    - about the catalog curve (:data:`CENTRED`): the catalog's curve is the mean of loading
+      and unloading, so the loop adds no backbone of its own;
+    - as a friction torque in parallel with the gear's spring (:data:`THROUGH_GEAR`): its
+      twist is the torque times the catalog curve's local compliance, so the loop narrows
+      past T1 and T2 where the gear stiffens.
 
     References: Seyfferth, W., Maghzal, A. J., Angeles, J. (1995) "Nonlinear modeling and
     parameter identification of harmonic drive robotic transmissions", Proc. IEEE ICRA;
     Tjahjowidodo, T., Al-Bender, F., Van Brussel, H. (2006) ISMA, Leuven.
     """
     if (problem.kind != "torsion" or "hysteresis" not in fit.effects
-            or problem.base.curve is None or problem.hysteresis_series
-            or problem.hysteresis_through_gear):  # already in that form
+            or problem.base.curve is None or problem.hysteresis_series):
         return fit
-    problem.hysteresis_through_gear = True
-    trial = fit_model(problem, fit.effects, fit.theta)
-    if trial.rss >= fit.rss:
-        problem.hysteresis_through_gear = False
+    named = (problem.hysteresis_centred, problem.hysteresis_through_gear)
+    best, form = fit, named
+    for trial_form in itertools.product((False, True), repeat=2):
+        if trial_form == named:
+            continue
+        problem.hysteresis_centred, problem.hysteresis_through_gear = trial_form
+        trial = fit_model(problem, fit.effects, fit.theta)
+        if trial.rss < best.rss:
+            best, form = trial, trial_form
+    problem.hysteresis_centred, problem.hysteresis_through_gear = form
+    for used, was, text, than in zip(form, named, (CENTRED, THROUGH_GEAR),
+                                     ("a loop with its own backbone", "a constant compliance")):
+        if used and not was:
+            problem.notes.append(f"{text} fits {math.sqrt(fit.rss / best.rss):.2f}× closer "
+                                 f"than {than}")
+    return best
+
+
+def refine_play(problem: Problem, fit: Fit) -> Fit:
+    """A named backlash whose play friction holds at one side until the load passes a
+    holding torque T_h in the new direction (a loop at zero torque of area b·2T_h), one
+    parameter more, kept when BIC prefers it (:func:`_one_more`)."""
+    if "backlash" not in fit.effects or problem.branches is None:
         return fit
-    problem.notes.append(f"{THROUGH_GEAR} fits {math.sqrt(fit.rss / trial.rss):.2f}× closer "
-                         "than a constant compliance")
-    return trial
+    t0 = problem.scales["T0"]
+    return _one_more(problem, fit, "play_hold", _PLAY_HOLD_BOUNDS, lambda h: (
+        f"backlash: the play is held by friction until the load passes {h * t0:.3g} N·m "
+        "in the new direction"))
 
 
 def refine_viscosity(problem: Problem, fit: Fit) -> Fit:
@@ -283,8 +313,11 @@ class _CurveModel:
         return np.column_stack([c for e in self.te for c in te_basis(self.problem, int(e[3]))])
 
     def solve(self, x0: np.ndarray, evaluations: int = _MAX_EVALUATIONS):
+        # least_squares' gradient tolerance is absolute: put it in the start residual's
+        # units (micro-radians would otherwise stop it at the start)
+        unit = float(np.mean(self.residual(x0) ** 2)) or 1.0
         return least_squares(self.residual, x0, jac=self.jacobian, bounds=self.bounds,
-                             x_scale="jac", max_nfev=evaluations)
+                             x_scale="jac", max_nfev=evaluations, gtol=1e-8 * unit)
 
     def theta_at(self, x) -> dict[str, float]:
         _, _, zeta, scale = self._split(x)

@@ -21,6 +21,11 @@ import numpy as np
 from .effects import Effect, Parameter
 
 
+# Time constant of a warm-up drift [half-records]: from a tenth of the record (a rig that
+# settles early in the test) to ten records (a slow curvature).
+WARM_UP_TAU = (0.2, 20.0)
+
+
 def _linear(name: str, unit: str, text: str) -> Parameter:
     return Parameter(name, unit, text, -np.inf, np.inf, linear=True)
 
@@ -31,9 +36,13 @@ RIG_EFFECTS: dict[str, Effect] = {e.name: e for e in (
         description=("A slow drift of the measured angle with test time (the rig and the "
                      "gear warm up, the fixture creeps): smooth in time, unrelated to torque "
                      "or angle."),
-        form="y += d1·u + d2·(3u² − 1)/2, u = record position from −1 (first row) to 1 (last)",
+        form=("y += d1·u + d2·w(u; τ), u = record position from −1 (first row) to 1 "
+              "(last), w the first-order warm-up 1 − exp(−(u + 1)/τ) less its straight line, "
+              "scaled to a peak of 1 (a long τ makes it a curvature)"),
         parameters=(_linear("d1", "rad", "linear drift over half the record"),
-                    _linear("d2", "rad", "curvature of the drift")),
+                    _linear("d2", "rad", "largest departure of the drift from a straight line"),
+                    Parameter("tau", "-", "warm-up time constant in half-records",
+                              WARM_UP_TAU[0], WARM_UP_TAU[1], "1")),
         kinds=("torsion", "transmission", "efficiency", "vibration")),
     Effect(
         name="angle_offset",
@@ -67,12 +76,13 @@ def applicable(kind: str) -> tuple[str, ...]:
     return tuple(n for n, e in RIG_EFFECTS.items() if kind in e.kinds)
 
 
-def columns(name: str, inputs: dict[str, np.ndarray], step_position: float
-            ) -> tuple[list[str], np.ndarray]:
-    """(linear parameter names, columns) of a measurement effect on the given rows."""
+def columns(name: str, inputs: dict[str, np.ndarray], step_position: float,
+            theta: dict[str, float] | None = None) -> tuple[list[str], np.ndarray]:
+    """(linear parameter names, columns) of a measurement effect on the given rows, with its
+    nonlinear parameters ``theta``."""
     u = inputs["record_position"]
     if name == "thermal_drift":
-        return ["d1", "d2"], np.column_stack([u, 1.5 * u * u - 0.5])
+        return ["d1", "d2"], np.column_stack([u, warm_up(u, theta["tau"])])
     if name == "angle_offset":
         return ["step"], (u >= step_position).astype(float)
     if name == "encoder_eccentricity":
@@ -81,6 +91,21 @@ def columns(name: str, inputs: dict[str, np.ndarray], step_position: float
     if name == "sensor_gain":
         return ["g"], inputs["output_angle_rad"]
     raise KeyError(name)
+
+
+def warm_up(u: np.ndarray, tau: float) -> np.ndarray:
+    """1 − exp(−(u + 1)/τ) less its least-squares line over u ∈ [−1, 1], scaled to a peak
+    of 1: what a first-order warm-up from the start of the test adds to a linear drift
+    (Newton's law of cooling). A warm-up that starts later in the test is not followed (a
+    bend in mid-record is as much the gear's as the rig's)."""
+    grid = np.linspace(-1.0, 1.0, 201)
+
+    def bent(x):
+        return -np.expm1(-(x + 1.0) / tau)
+    # the line through the warm-up on a uniform record: mean and 3·mean(u·w) (Legendre P0, P1)
+    line = np.polynomial.legendre.legfit(grid, bent(grid), 1)
+    rest = bent(grid) - np.polynomial.legendre.legval(grid, line)
+    return (bent(u) - np.polynomial.legendre.legval(u, line)) / np.max(np.abs(rest))
 
 
 def step_position(residual: np.ndarray, position: np.ndarray) -> float:

@@ -16,9 +16,9 @@
    spring is the loop's own slip compliance is named as one slip element in series, and
    reported with the pair as its other reading (:func:`series_slip`), unless the pair with
    its loop through the gear's compliance fits clearly better (:func:`_through_gear`);
-   otherwise the spring must also earn its place beside the loop through the gear's
-   compliance, or it is the loop's own narrowing and only the hysteresis is named
-   (:func:`_spring_of_its_own`).
+   otherwise a spring must also earn its place beside the loop through the gear's
+   compliance, and a spring or a backlash beside the loop drawn about the catalog curve, or
+   it is the loop's own shape and only the hysteresis is named (:func:`_spring_of_its_own`).
 
 References
 ----------
@@ -263,29 +263,45 @@ def _beyond_law(problem: Problem, member: str, other: Fit, fit: Fit, sigma: floa
 
 def _spring_of_its_own(problem: Problem, best: Candidate | None, passing: list[Candidate],
                        sigma: float, tau: float) -> Candidate | None:
-    """The best candidate, or its hysteresis alone when the housing spring beside it adds
-    too little once the loop runs through the gear's compliance (:data:`.refine.THROUGH_GEAR`:
-    it narrows where the gear stiffens). Beside a loop of constant width a linear spring can
-    stand in for part of that narrowing; a spring of the housing's own is needed with either
-    form of the loop."""
+    """The best candidate, or its hysteresis alone when the second beside it adds too little
+    with the loop in another of its forms:
+
+    - through the gear's compliance (:data:`.refine.THROUGH_GEAR`: it narrows where the gear
+      stiffens), for a housing spring: beside a loop of constant width a linear spring can
+      stand in for part of that narrowing;
+    - about the catalog curve (:data:`.refine.CENTRED`: the loop's own centre line taken
+      out), for a housing spring or a backlash, where that loop alone fits as well as the
+      pair: beside a loop with its own backbone either can stand in for undoing it.
+
+    A second of the gear's own is needed with every form of the loop."""
     single = next((c for c in passing if c.effects == ("hysteresis",)), None)
-    if (best is None or set(best.effects) != {"hysteresis", "housing_compliance"}
-            or single is None or problem.base.curve is None):
+    if (best is None or single is None or len(best.effects) != 2
+            or "hysteresis" not in best.effects):
         return best
-    problem.hysteresis_through_gear = True
-    try:
-        alone = fit_model(problem, single.fit.effects, single.fit.theta)
-        pair = min((fit_model(problem, best.fit.effects, theta)
-                    for theta in (best.fit.theta, {**best.fit.theta, **alone.theta})),
-                   key=lambda f: f.rss)
-    finally:
-        problem.hysteresis_through_gear = False
-    if gate(problem, alone, pair, sigma, tau).passes(second=True):
+    second = next(e for e in best.effects if e != "hysteresis")
+    # (attribute, words, shape, only where the loop alone in that form fits as well as the pair)
+    forms = [("hysteresis_centred", "about the catalog curve", "backbone", True)]
+    if second == "housing_compliance" and problem.base.curve is not None:
+        forms.insert(0, ("hysteresis_through_gear", "through the gear's compliance",
+                         "narrowing", False))
+    elif second != "backlash":
         return best
-    problem.notes.append("housing_compliance beside the loop adds too little once the loop "
-                         "runs through the gear's compliance: read as the loop's own "
-                         "narrowing, not named")
-    return single
+    for attribute, words, shape, if_better in forms:
+        setattr(problem, attribute, True)
+        try:
+            alone = fit_model(problem, single.fit.effects, single.fit.theta)
+            if if_better and alone.rss > best.fit.rss:
+                continue  # the pair reads better than the loop about the curve alone
+            pair = min((fit_model(problem, best.fit.effects, theta)
+                        for theta in (best.fit.theta, {**best.fit.theta, **alone.theta})),
+                       key=lambda f: f.rss)
+        finally:
+            setattr(problem, attribute, False)
+        if not gate(problem, alone, pair, sigma, tau).passes(second=True):
+            problem.notes.append(f"{second} beside the loop adds too little once the loop runs "
+                                 f"{words}: read as the loop's own {shape}, not named")
+            return single
+    return best
 
 
 def recheck_rig(problem: Problem, final: Fit) -> Fit:
