@@ -127,7 +127,7 @@ def test_cli_json_shape_on_the_shipped_example(tmp_path, capsys):
     assert doc["rmse_after"] < 0.2 * doc["rmse_before"]
     for step in doc["steps"]:
         assert step["effect"] in EFFECT_NAMES
-        assert set(step) == {"effect", "params", "criterion_gain", "rmse"}
+        assert set(step) == {"effect", "params", "criterion_gain", "rmse", "form"}
         assert all(set(v) == {"value", "unit"} for v in step["params"].values())
     assert all(set(d) == {"where", "rms", "noise_rms"} for d in doc["disagreements"])
 

@@ -146,7 +146,7 @@ def test_json_shape(kind, effects):
     assert all(name in EFFECT_NAMES for name in doc["missing_effects"])
     assert [s["effect"] for s in doc["steps"]] == doc["missing_effects"]
     for step in doc["steps"]:
-        assert set(step) == {"effect", "params", "criterion_gain", "rmse"}
+        assert set(step) == {"effect", "params", "criterion_gain", "rmse", "form"}
         assert _finite(step["criterion_gain"]) and _finite(step["rmse"])
         assert step["params"], f"{step['effect']} has no fitted parameters"
         for value in step["params"].values():

@@ -21,6 +21,7 @@ from scipy.optimize import least_squares, lsq_linear
 from . import baseline as baselines
 from . import effects as fx
 from . import joint
+from . import preisach
 from . import rig
 
 # Above this many rows the fit uses this many rows drawn at random (fixed seed; time order
@@ -67,6 +68,10 @@ class Problem:
     outliers: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=int))
     step_position: float = 0.0
     te_order: int = TE_ORDER  # Legendre order of the TE amplitude and phase
+    # harmonics of the named errors at k cycles per WG revolution (a wave generator's
+    # ellipse series: 4× and 6× beside 2×), each with a constant amplitude: none while
+    # effects are named, chosen by BIC once they are (refine.refine_te_overtones)
+    te_overtones: tuple[int, ...] = ()
     # hysteresis as a slip element in series with the gear (z_sat·(T/T_s − z)) instead of
     # friction in parallel with it (−z_sat·z): the reading a hysteresis + spring pair is
     # tested against
@@ -78,6 +83,10 @@ class Problem:
     # hysteresis as a loop about the catalog curve (its centre line taken out: the catalog
     # curve is the mean of loading and unloading) instead of a loop with its own backbone
     hysteresis_centred: bool = False
+    # hysteresis as a Preisach relay sum (preisach.PreisachPlane) with this density: (median
+    # slip torque [N·m], its log-spread [-], spread of the relays' centres [N·m]) instead of
+    # the Bouc–Wen loop; tried once the effect is named (loops.refine_preisach)
+    hysteresis_preisach: tuple[float, float, float] | None = None
     # constant C [°C] of the viscosity–temperature law (effects.VISCOSITY_LAWS_C): Reynolds'
     # while effects are named, the law that fits best once they are (refine.refine_viscosity)
     viscosity_C: float = math.inf
@@ -212,6 +221,13 @@ def _harmonic(problem: Problem, order: int, theta: dict, full: bool) -> np.ndarr
     return problem.cache[key][:, :width]
 
 
+def overtones_of(problem: Problem, effects: tuple[str, ...], name: str) -> list[int]:
+    """The chosen overtones that belong to the named error ``name``: to te_2x those it
+    divides, to te_1x the rest."""
+    mine = [k for k in problem.te_overtones if k % 2 == 0 and "te_2x" in effects]
+    return mine if name == "te_2x" else [k for k in problem.te_overtones if k not in mine]
+
+
 def te_basis(problem: Problem, order: int) -> list[np.ndarray]:
     """The error's columns on every row: sin/cos of k·φ times P0 … P_te_order of the record
     position (a slowly varying amplitude and phase), labelled as :func:`te_labels`."""
@@ -262,11 +278,7 @@ def columns(problem: Problem, effects: tuple[str, ...], theta: dict[str, float],
             names, block = rig.columns(name, inp, problem.step_position, th)
             add(name, names, block)
         elif name == "hysteresis":
-            z = fx.hysteresis_state(inp["torque_Nm"], th["T_s"], th["rho"], th["n"], branches,
-                                    th["z0"], th["first_scale"])
-            if problem.hysteresis_centred:
-                z = z - fx.loop_centre(inp["torque_Nm"], th["T_s"], th["rho"], th["n"],
-                                       problem.scales["T0"])
+            z = _hysteresis_state(problem, inp["torque_Nm"], th, branches, rows)
             if problem.hysteresis_series:
                 z = z - inp["torque_Nm"] / th["T_s"]
             elif problem.hysteresis_through_gear:  # friction torque × the gear's compliance
@@ -285,6 +297,8 @@ def columns(problem: Problem, effects: tuple[str, ...], theta: dict[str, float],
         elif name in ("te_1x", "te_2x"):
             block = _harmonic(problem, int(name[3]), theta, full)
             add(name, te_labels(problem.te_order)[:block.shape[1]], block)
+            for k in overtones_of(problem, effects, name):
+                add(name, [f"sin_{k}x", f"cos_{k}x"], _harmonic(problem, k, theta, full)[:, :2])
         elif name == "low_load_efficiency":
             f = fx.low_load_factor(inp["alpha"], th["c"], th["q"], inp["input_speed_rpm"],
                                    th["s"], _viscosity(problem, effects, theta, inp),
@@ -300,6 +314,24 @@ def columns(problem: Problem, effects: tuple[str, ...], theta: dict[str, float],
     if factor is not None:  # η = η0·Ke(α)·F(t): the effects scale the whole efficiency
         X = X * factor[:, None]
     return X, labels, np.array(lower), np.array(upper)
+
+
+def _hysteresis_state(problem: Problem, torque: np.ndarray, th: dict, branches, rows
+                      ) -> np.ndarray:
+    """The loop's state z (−1 … 1) on the rows: Bouc–Wen at the shape ``th``, or the
+    Preisach relay sum when ``problem.hysteresis_preisach`` holds its density; less the
+    loop's centre line when it is drawn about the catalog curve."""
+    if problem.hysteresis_preisach is not None:
+        if "preisach" not in problem.cache:
+            problem.cache["preisach"] = preisach.PreisachPlane(
+                problem.base.inputs["torque_Nm"], problem.scales["T0"])
+        return problem.cache["preisach"].loop(torque, rows, *problem.hysteresis_preisach,
+                                              problem.hysteresis_centred)
+    z = fx.hysteresis_state(torque, th["T_s"], th["rho"], th["n"], branches, th["z0"],
+                            th["first_scale"])
+    if problem.hysteresis_centred:
+        z = z - fx.loop_centre(torque, th["T_s"], th["rho"], th["n"], problem.scales["T0"])
+    return z
 
 
 def _viscosity(problem: Problem, effects: tuple[str, ...], theta: dict, inp: dict

@@ -133,3 +133,14 @@ class Candidate:
     undecided: tuple[str, ...] = ()   # second effects left unnamed as ambiguous
     series_slip: bool = False         # the pair reads the same as one series slip element
     progressive: bool = False         # a slow backlash read as a stiffening series spring
+
+
+def effective_n(problem: Problem, residual: np.ndarray) -> float:
+    """N/τ of the fitted rows, τ from the AR(1) noise of ``residual``."""
+    return len(problem.rows) / ar1_time(noise_model(residual)[1])
+
+
+def bic_best(fits: dict, n_eff: float):
+    """The key of ``fits`` ({key: (rss, parameters)}) with the lowest BIC at n_eff."""
+    return min(fits, key=lambda k: n_eff * math.log(max(fits[k][0], 1e-300))
+               + fits[k][1] * math.log(n_eff))

@@ -40,10 +40,28 @@ def _te(b: dict[str, float], th: dict[str, float]) -> dict[str, tuple[float, str
         s = b["sin"] + sum(b[f"sin_u{k}"] * polys[k] for k in range(1, len(polys)))
         c = b["cos"] + sum(b[f"cos_u{k}"] * polys[k] for k in range(1, len(polys)))
         out["amplitude_max"] = (float(np.max(np.hypot(s, c))), "rad")
+    for key in b:  # overtones of the error's harmonic series
+        if key.startswith("sin_") and key.endswith("x"):
+            k = key[4:-1]
+            out[f"amplitude_{k}x"] = (math.hypot(b[key], b[f"cos_{k}x"]), "rad")
     for shared in ("damping_ratio", "stiffness_scale"):
         if shared in th:
             out[shared] = (th[shared], "-")
     return out
+
+
+PREISACH_FORM = ("θ = θ_catalog(T) + z_sat·f(T history)  (Preisach relay sum: "
+                 "f = −E(α0, β0) + 2·Σ[E(M_k, m_k−1) − E(M_k, m_k)] over the alternating "
+                 "dominant extrema of the torque, E the Everett function of lognormal slip "
+                 "torques × normally spread relay centres; Mayergoyz 1991)")
+
+
+def effect_form(problem: Problem, effect: str) -> str:
+    """The formula of the effect as the final model has it (the catalog of effects gives
+    the form it is named with)."""
+    if effect == "hysteresis" and problem.hysteresis_preisach is not None:
+        return PREISACH_FORM
+    return fx.EFFECTS[effect].form
 
 
 def effect_params(problem: Problem, fit: Fit, effect: str) -> dict[str, dict]:
@@ -52,7 +70,15 @@ def effect_params(problem: Problem, fit: Fit, effect: str) -> dict[str, dict]:
     th = {p.name: fit.theta[key_of(effect, p.name)]
           for p in parameters_of(effect, problem.kind)}
     out: dict[str, tuple[float, str]] = {}
-    if effect == "hysteresis":
+    if effect == "hysteresis" and problem.hysteresis_preisach is not None:
+        w, spread, c = problem.hysteresis_preisach
+        plane = problem.cache.get("preisach")
+        out = {"z_sat": (b["z_sat"], "rad"), "slip_torque_median": (w, "N·m"),
+               "slip_torque_log_spread": (spread, "-"), "centre_spread": (c, "N·m"),
+               "T0": (problem.scales["T0"], "N·m")}
+        if plane is not None:
+            out["loss_at_T0"] = (b["z_sat"] * plane.loss(w, spread, c), "rad")
+    elif effect == "hysteresis":
         t0 = problem.scales["T0"]
         out = {"z_sat": (b["z_sat"], "rad"), "T_s": (th["T_s"], "N·m"), "rho": (th["rho"], "-"),
                "n": (th["n"], "-"), "z0": (th["z0"], "-"),
@@ -84,4 +110,4 @@ def effect_params(problem: Problem, fit: Fit, effect: str) -> dict[str, dict]:
     return {k: {"value": float(v), "unit": u} for k, (v, u) in out.items()}
 
 
-__all__ = ["effect_params", "rig_params", "TE_LABELS"]
+__all__ = ["effect_form", "effect_params", "rig_params", "TE_LABELS"]

@@ -111,7 +111,8 @@ def harmonics(problem, residual, sigma, tau, theta=None):
 def unexplained(problem, final, sigma, tau, harmonics, fit) -> list[str]:
     """Significant structure left in the residual after the accepted effects."""
     out = []
-    explained_orders = {int(e[3]) for e in fit.effects if e.startswith("te_")}
+    explained_orders = ({int(e[3]) for e in fit.effects if e.startswith("te_")}
+                        | set(problem.te_overtones))
     for k, rms, sig in harmonics:
         if sig and k not in explained_orders:
             out.append(f"residual at {k} cycle(s) per WG revolution (RMS {rms:.3g} "

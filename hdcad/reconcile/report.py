@@ -111,7 +111,7 @@ def report_context(result: Reconciliation, figures: list[dict]) -> dict:
     unit = result.unit
     gain = 1.0 - result.rmse_after / result.rmse_before if result.rmse_before > 0 else 0.0
     steps = [{"effect": st.effect, "description": EFFECTS[st.effect].description,
-              "form": EFFECTS[st.effect].form, "criterion_gain": f"{st.criterion_gain:.1f}",
+              "form": st.form or EFFECTS[st.effect].form, "criterion_gain": f"{st.criterion_gain:.1f}",
               "cv_gain": f"{st.cv_gain:.0%}", "rmse": fmt(st.rmse, unit),
               "params": [{"name": k, "value": fmt(v["value"], v["unit"])}
                          for k, v in st.params.items()]}

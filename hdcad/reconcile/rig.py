@@ -16,6 +16,8 @@ used to place an offset step.
 
 from __future__ import annotations
 
+import functools
+
 import numpy as np
 
 from .effects import Effect, Parameter
@@ -77,7 +79,7 @@ def applicable(kind: str) -> tuple[str, ...]:
 
 
 def columns(name: str, inputs: dict[str, np.ndarray], step_position: float,
-            theta: dict[str, float] | None = None) -> tuple[list[str], np.ndarray]:
+            theta: dict[str, float]) -> tuple[list[str], np.ndarray]:
     """(linear parameter names, columns) of a measurement effect on the given rows, with its
     nonlinear parameters ``theta``."""
     u = inputs["record_position"]
@@ -98,14 +100,22 @@ def warm_up(u: np.ndarray, tau: float) -> np.ndarray:
     of 1: what a first-order warm-up from the start of the test adds to a linear drift
     (Newton's law of cooling). A warm-up that starts later in the test is not followed (a
     bend in mid-record is as much the gear's as the rig's)."""
-    grid = np.linspace(-1.0, 1.0, 201)
+    line, peak = _warm_up_line(float(tau))
+    return (_bent(u, tau) - np.polynomial.legendre.legval(u, line)) / peak
 
-    def bent(x):
-        return -np.expm1(-(x + 1.0) / tau)
-    # the line through the warm-up on a uniform record: mean and 3·mean(u·w) (Legendre P0, P1)
-    line = np.polynomial.legendre.legfit(grid, bent(grid), 1)
-    rest = bent(grid) - np.polynomial.legendre.legval(grid, line)
-    return (bent(u) - np.polynomial.legendre.legval(u, line)) / np.max(np.abs(rest))
+
+def _bent(x: np.ndarray, tau: float) -> np.ndarray:
+    return -np.expm1(-(x + 1.0) / tau)
+
+
+@functools.lru_cache(maxsize=256)
+def _warm_up_line(tau: float) -> tuple[np.ndarray, float]:
+    """Legendre coefficients of the warm-up's line on a uniform record, and the peak of what
+    is left (the fit calls this with the same τ many times)."""
+    grid = np.linspace(-1.0, 1.0, 201)
+    line = np.polynomial.legendre.legfit(grid, _bent(grid, tau), 1)
+    rest = _bent(grid, tau) - np.polynomial.legendre.legval(grid, line)
+    return line, float(np.max(np.abs(rest)))
 
 
 def step_position(residual: np.ndarray, position: np.ndarray) -> float:

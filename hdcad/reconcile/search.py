@@ -37,7 +37,8 @@ from . import rig, springs
 from .fitting import Fit, Problem, finish, fit_model, nonlinear
 from .gates import (BIC_MIN, EXPLAINED_MIN, GATE_NOTE, Candidate, Gate, gate, has_evidence,
                     round_noise)
-from .refine import THROUGH_GEAR, fit_viscosity_law, refine_te_order
+from .loops import THROUGH_GEAR, preisach_forms, use_preisach
+from .refine import fit_viscosity_law, refine_te_order
 
 __all__ = ["BIC_MIN", "GATE_NOTE", "Candidate", "Gate", "gate", "round_noise", "select_gear",
            "select_rig", "recheck_rig"]
@@ -105,6 +106,8 @@ def select_gear(problem: Problem, start: Fit, singles: dict[str, Fit] | None = N
     passing = [c for c in out if c.passes]
     best = max(passing, key=lambda c: c.gate.delta_bic) if passing else None
     best = _unless_ambiguous(best, passing)
+    if best is None and "hysteresis" in singles and problem.base.curve is not None:
+        best = _preisach_single(problem, start, singles, list(pairs.values()), out)
     tied = series_slip(problem, start, best, sigma, tau) if best is not None else None
     through = _through_gear(problem, best, tied, sigma, tau) if tied is not None else None
     if through is not None:  # the pair stays, its loop through the gear's compliance
@@ -122,6 +125,33 @@ def select_gear(problem: Problem, start: Fit, singles: dict[str, Fit] | None = N
         out = [c for c in out if c.effects != spring.effects] + [spring]
         best = spring
     return best, out
+
+
+# a loop tried once every effect has failed must explain at least the noise variance: a
+# second try must not rest on a marginal gain (a wrong-units decoy passed at 0.13σ²)
+SECOND_TRY_EXPLAINED_MIN = 1.0
+
+
+def _preisach_single(problem: Problem, start: Fit, singles: dict[str, Fit], pairs: list[Fit],
+                     out: list[Candidate]) -> Candidate | None:
+    """When no effect passes: the hysteresis as a Preisach relay sum (in its best form),
+    named when it passes the gates and the loop evidence, the noise estimated with it in
+    the round. Under cycles of several amplitudes a Bouc–Wen loop, without the Preisach
+    memory, can leave so much of a real loop that its residual reads as correlated noise;
+    replaces the hysteresis candidate in ``out`` and sets the problem's loop when named."""
+    fit, density, form = min(preisach_forms(problem, singles["hysteresis"]),
+                             key=lambda t: t[0].rss)
+    sigma, tau = round_noise(problem, [start, *singles.values(), *pairs, fit])
+    g = gate(problem, start, fit, sigma, tau)
+    if not (g.passes() and g.explained >= SECOND_TRY_EXPLAINED_MIN
+            and has_evidence(problem, "hysteresis", start, sigma, tau)):
+        return None
+    use_preisach(problem, density, form)
+    problem.notes.append("hysteresis named as a Preisach relay sum: the Bouc–Wen loop did "
+                         "not pass the gates on these data")
+    best = Candidate(("hysteresis",), fit, g, True)
+    out[:] = [best if c.effects == best.effects else c for c in out]
+    return best
 
 
 def ambiguous_second(best: Candidate, passing: list[Candidate]
@@ -178,7 +208,7 @@ def series_slip(problem: Problem, start: Fit, best: Candidate, sigma: float, tau
 def _through_gear(problem: Problem, best: Candidate, tied: Fit, sigma: float, tau: float
                   ) -> Fit | None:
     """The hysteresis + housing pair with the loop through the gear's compliance
-    (:func:`.refine.refine_hysteresis`) when it passes the gates over the series slip
+    (:func:`.loops.refine_hysteresis`) when it passes the gates over the series slip
     element ``tied``; else None. A loop that narrows where the gear stiffens, beside a
     spring of its own, is not one slip element in series: the series reading is tested
     against both forms of the loop. Leaves the form set on ``problem`` when it is kept."""
@@ -266,10 +296,10 @@ def _spring_of_its_own(problem: Problem, best: Candidate | None, passing: list[C
     """The best candidate, or its hysteresis alone when the second beside it adds too little
     with the loop in another of its forms:
 
-    - through the gear's compliance (:data:`.refine.THROUGH_GEAR`: it narrows where the gear
+    - through the gear's compliance (:data:`.loops.THROUGH_GEAR`: it narrows where the gear
       stiffens), for a housing spring: beside a loop of constant width a linear spring can
       stand in for part of that narrowing;
-    - about the catalog curve (:data:`.refine.CENTRED`: the loop's own centre line taken
+    - about the catalog curve (:data:`.loops.CENTRED`: the loop's own centre line taken
       out), for a housing spring or a backlash, where that loop alone fits as well as the
       pair: beside a loop with its own backbone either can stand in for undoing it.
 

@@ -33,7 +33,7 @@ from . import units
 from .data import validate_data
 from .fitting import Fit, Problem, fit_model, make_problem, set_rows
 from .noise import correlation_time, noise_rms
-from .params import effect_params, rig_params
+from .params import effect_form, effect_params, rig_params
 
 GATE_NOTE = search.GATE_NOTE
 # A sample further than this many noise RMS from the median of its neighbours is a gross
@@ -52,6 +52,7 @@ class Step:
     criterion_gain: float
     cv_gain: float
     rmse: float
+    form: str = ""  # the effect's formula as the final model has it
 
 
 @dataclass
@@ -83,7 +84,8 @@ class Reconciliation:
                 "missing_effects": list(self.missing_effects),
                 "rmse_before": self.rmse_before, "rmse_after": self.rmse_after,
                 "steps": [{"effect": s.effect, "params": s.params,
-                           "criterion_gain": s.criterion_gain, "rmse": s.rmse}
+                           "criterion_gain": s.criterion_gain, "rmse": s.rmse,
+                           "form": s.form}
                           for s in self.steps],
                 "unexplained": list(self.unexplained),
                 "measurement_effects": self.measurement_effects,
@@ -186,7 +188,8 @@ def _steps(problem, named, candidates, final, keep) -> list[Step]:
         cand = by_effects.get((effect,)) if i == 0 else by_set[frozenset(named)]
         fit = cand.fit if i < len(named) - 1 else final
         out.append(Step(effect, effect_params(problem, final, effect), cand.gate.delta_bic,
-                        cand.gate.cv_gain, _rmse((problem.base.y - fit.prediction)[keep])))
+                        cand.gate.cv_gain, _rmse((problem.base.y - fit.prediction)[keep]),
+                        effect_form(problem, effect)))
     return out
 
 
