@@ -16,7 +16,7 @@ from scipy.optimize import least_squares
 
 from . import effects as fx
 from .fitting import Fit, Problem, columns, finish, fit_model, solve
-from .gates import effective_n
+from .gates import bic_best, effective_n
 
 THROUGH_GEAR = ("hysteresis: a friction torque in parallel with the gear's spring (its twist "
                 "the torque × the catalog curve's local compliance)")
@@ -118,9 +118,7 @@ def refine_preisach(problem: Problem, fit: Fit) -> Fit:
         return fit
     best, density, form = min(preisach_forms(problem, fit), key=lambda t: t[0].rss)
     n_eff = effective_n(problem, best.residual(problem))
-    bic = [n_eff * math.log(max(f.rss, 1e-300)) + f.n_params * math.log(n_eff)
-           for f in (fit, best)]
-    if bic[1] >= bic[0]:
+    if not bic_best({False: (fit.rss, fit.n_params), True: (best.rss, best.n_params)}, n_eff):
         return fit
     use_preisach(problem, density, form)
     w, s, c = density
