@@ -413,4 +413,6 @@ def main(argv: Sequence[str] | None = None) -> int:
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    # the console command's entry (a Ctrl-C still pending once main has answered must not
+    # end in a death by SIGINT) for ``python -m hdcad.cli`` too
+    sys.exit(_entry.run())

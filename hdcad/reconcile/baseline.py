@@ -216,7 +216,7 @@ def torsion(data: dict, model: GearModel, catalog: Catalog) -> Baseline:
     free = np.column_stack([catalog_twist(curve, torque, 0.0), np.ones(n)])
     base = Baseline("torsion", data["twist_rad"], np.zeros(n), free,
                     ("compliance_scale", "offset"), ("-", "rad"), "rad", figures, notes,
-                    {"torque_Nm": torque}, curve)
+                    {"torque_Nm": torque, "measured_rad": data["twist_rad"]}, curve)
     return base
 
 

@@ -61,15 +61,20 @@ class Gate:
 
 def gate(problem: Problem, reference: Fit, fit: Fit, sigma: float, tau: float) -> Gate:
     n = len(problem.rows)
-    n_eff = n / tau
-    dk = fit.n_params - reference.n_params
-    bic = n_eff * math.log(reference.rss / max(fit.rss, 1e-300)) - dk * math.log(n_eff)
+    bic = bic_gain(reference, fit, n / tau)
     cv = ((reference.cv_mse - fit.cv_mse) / reference.cv_mse if reference.cv_mse > 0
           else 0.0)
     explained = (reference.rss - fit.rss) / n / sigma ** 2
     structure = reference.rss / n - sigma ** 2
     share = (reference.rss - fit.rss) / n / structure if structure > 0 else math.inf
     return Gate(bic, cv, explained, share)
+
+
+def bic_gain(reference: Fit, fit: Fit, n_eff: float) -> float:
+    """ΔBIC [-] of ``fit`` over ``reference`` at the effective sample size ``n_eff``:
+    n_eff·ln(RSS_ref/RSS) − Δk·ln(n_eff) (positive: ``fit`` is preferred)."""
+    return (n_eff * math.log(reference.rss / max(fit.rss, 1e-300))
+            - (fit.n_params - reference.n_params) * math.log(n_eff))
 
 
 def round_noise(problem: Problem, fits: list[Fit]) -> tuple[float, float]:

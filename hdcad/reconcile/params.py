@@ -25,6 +25,9 @@ def rig_params(problem: Problem, fit: Fit, effect: str) -> dict[str, dict]:
         out["at_record_position"] = {"value": problem.step_position, "unit": "-"}
     if effect == "thermal_drift":
         out["tau"] = {"value": fit.theta["thermal_drift.tau"], "unit": "half-records"}
+    if effect == "encoder_interpolation":
+        out["period"] = {"value": fit.theta["encoder_interpolation.period"], "unit": unit}
+        out["amplitude"] = {"value": math.hypot(b["a1"], b["b1"]), "unit": unit}
     if effect == "encoder_eccentricity":
         out["amplitude"] = {"value": math.hypot(b["a"], b["b"]), "unit": unit}
     return out
@@ -72,12 +75,10 @@ def effect_params(problem: Problem, fit: Fit, effect: str) -> dict[str, dict]:
     out: dict[str, tuple[float, str]] = {}
     if effect == "hysteresis" and problem.hysteresis_preisach is not None:
         w, spread, c = problem.hysteresis_preisach
-        plane = problem.cache.get("preisach")
         out = {"z_sat": (b["z_sat"], "rad"), "slip_torque_median": (w, "N·m"),
                "slip_torque_log_spread": (spread, "-"), "centre_spread": (c, "N·m"),
-               "T0": (problem.scales["T0"], "N·m")}
-        if plane is not None:
-            out["loss_at_T0"] = (b["z_sat"] * plane.loss(w, spread, c), "rad")
+               "T0": (problem.scales["T0"], "N·m"),
+               "loss_at_T0": (b["z_sat"] * problem.preisach_plane.loss(w, spread, c), "rad")}
     elif effect == "hysteresis":
         t0 = problem.scales["T0"]
         out = {"z_sat": (b["z_sat"], "rad"), "T_s": (th["T_s"], "N·m"), "rho": (th["rho"], "-"),

@@ -33,6 +33,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
+from scipy import sparse
 from scipy.special import erf
 
 # limiting triangle |α|, |β| ≤ LIMIT·T0: relays wider than that never switch in the test
@@ -110,6 +111,18 @@ def everett_terms(torque_Nm: np.ndarray, T0: float
     return (np.array(rows), np.array(alphas), np.array(betas), np.array(coefs))
 
 
+def term_matrix(terms, n: int) -> tuple[sparse.csr_matrix, np.ndarray, np.ndarray]:
+    """(S, α, β): ``terms`` folded onto their distinct (α, β) pairs, so that the output of
+    ``n`` samples is S @ E(α, β). The closed pairs of the memory repeat from sample to
+    sample; only the branch from the last turning point is new, so the distinct pairs are
+    a few per sample where the terms are ten or more."""
+    rows, alpha, beta, coef = terms
+    # one sort of α + iβ (lexicographic on complex numbers) instead of a row-wise unique
+    pairs, index = np.unique(alpha + 1j * beta, return_inverse=True)
+    S = sparse.csr_matrix((coef, (rows, index.ravel())), shape=(n, len(pairs)))
+    return S, pairs.real.copy(), pairs.imag.copy()
+
+
 class PreisachPlane:
     """The Everett terms of one torque record and of the steady major loop between ±T0
     (listed once); :meth:`loop` is the model for one density."""
@@ -117,29 +130,44 @@ class PreisachPlane:
     def __init__(self, torque_Nm: np.ndarray, T0: float):
         self.T0 = T0
         self.n = len(torque_Nm)
-        self.terms = everett_terms(torque_Nm, T0)
+        self.terms = term_matrix(everett_terms(torque_Nm, T0), self.n)
         self.grid = np.linspace(-T0, T0, _MAJOR_POINTS)
         history = np.concatenate([np.linspace(0.0, T0, _MAJOR_POINTS), self.grid[::-1],
                                   self.grid])
-        self.major = everett_terms(history, T0)
+        self.major = term_matrix(everett_terms(history, T0), len(history))
         self._subsets: dict = {}
+        self._last: tuple = (None, None)
 
-    def _output(self, terms, n: int, density: tuple[float, float, float]) -> np.ndarray:
-        rows, alpha, beta, coef = terms
+    def _output(self, terms, density: tuple[float, float, float]) -> np.ndarray:
+        S, alpha, beta = terms
         total = everett(np.array([LIMIT * self.T0]), np.array([-LIMIT * self.T0]), *density)
-        return np.bincount(rows, coef * everett(alpha, beta, *density), n) - total
+        return S @ everett(alpha, beta, *density) - total
 
-    def _terms_on(self, rows) -> tuple[tuple, int]:
-        """The record's terms on ``rows`` (sorted sample indices, or every row), renumbered."""
+    @staticmethod
+    def _key(rows) -> tuple:
         if isinstance(rows, slice):
-            return self.terms, self.n
-        key = (len(rows), int(rows[0]), int(rows[-1]), int(rows.sum()))
+            return ()
+        return (len(rows), int(rows[0]), int(rows[-1]), int(rows.sum()))
+
+    def _terms_on(self, rows) -> tuple:
+        """The record's terms on ``rows`` (sorted sample indices, or every row)."""
+        if isinstance(rows, slice):
+            return self.terms
+        key = self._key(rows)
         if key not in self._subsets:
-            sample, alpha, beta, coef = self.terms
-            keep = np.isin(sample, rows)
-            self._subsets = {key: ((np.searchsorted(rows, sample[keep]), alpha[keep],
-                                    beta[keep], coef[keep]), len(rows))}
+            S, alpha, beta = self.terms
+            S = S[rows]
+            used = np.unique(S.indices)
+            self._subsets = {key: (S[:, used], alpha[used], beta[used])}
         return self._subsets[key]
+
+    def _record(self, rows, density) -> np.ndarray:
+        """The Preisach output on ``rows``; the last one is kept, since the loop's forms
+        share it."""
+        key = (self._key(rows), density)
+        if self._last[0] != key:
+            self._last = (key, self._output(self._terms_on(rows), density))
+        return self._last[1]
 
     def loop(self, torque_Nm: np.ndarray, rows, width: float, spread: float,
              centre_spread: float, centred: bool) -> np.ndarray:
@@ -148,7 +176,7 @@ class PreisachPlane:
         less the centre line of the steady major loop (the mean of its descending and
         ascending branches, which the catalog curve is), at the rows' torque."""
         density = (width, spread, centre_spread)
-        z = -self._output(*self._terms_on(rows), density)
+        z = -self._record(rows, density)
         if centred:
             down, up = self._branches(density)
             z = z + np.interp(torque_Nm, self.grid, 0.5 * (down + up))
@@ -163,5 +191,5 @@ class PreisachPlane:
     def _branches(self, density) -> tuple[np.ndarray, np.ndarray]:
         """Preisach output on the descending and ascending branches of the major loop, on
         :attr:`grid`."""
-        f = self._output(self.major, 3 * _MAJOR_POINTS, density)
+        f = self._output(self.major, density)
         return f[_MAJOR_POINTS:2 * _MAJOR_POINTS][::-1], f[2 * _MAJOR_POINTS:]

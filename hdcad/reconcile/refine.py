@@ -17,7 +17,7 @@ from scipy.optimize import minimize_scalar
 
 from . import effects as fx
 from .fitting import TE_ORDER_MAX, Fit, Problem, finish, fit_model, nonlinear
-from .gates import BIC_MIN, bic_best, effective_n
+from .gates import BIC_MIN, bic_best, bic_gain, effective_n
 from .joint_fit import refine_spring
 from .loops import refine_hysteresis, refine_preisach
 
@@ -83,9 +83,7 @@ def refine_te_overtones(problem: Problem, fit: Fit) -> Fit:
     while len(chosen) < len(allowed):
         trials = {k: with_overtones(chosen + (k,)) for k in allowed if k not in chosen}
         k = min(trials, key=lambda j: trials[j].rss)
-        gain = (n_eff * math.log(best.rss / max(trials[k].rss, 1e-300))
-                - (trials[k].n_params - best.n_params) * math.log(n_eff))
-        if gain <= BIC_MIN:
+        if bic_gain(best, trials[k], n_eff) <= BIC_MIN:
             break
         chosen, best = chosen + (k,), trials[k]
     problem.te_overtones = tuple(sorted(chosen))

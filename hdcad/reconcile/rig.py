@@ -27,6 +27,10 @@ from .effects import Effect, Parameter
 # settles early in the test) to ten records (a slow curvature).
 WARM_UP_TAU = (0.2, 20.0)
 
+# Harmonics of an encoder's interpolation error: read at the measured angle y = θ + e(θ),
+# the error is still periodic in y, its k-th harmonic (2π·e/p)^(k−1) of the first.
+INTERPOLATION_HARMONICS = 3
+
 
 def _linear(name: str, unit: str, text: str) -> Parameter:
     return Parameter(name, unit, text, -np.inf, np.inf, linear=True)
@@ -62,6 +66,22 @@ RIG_EFFECTS: dict[str, Effect] = {e.name: e for e in (
         parameters=(_linear("a", "rad", "sine part"), _linear("b", "rad", "cosine part")),
         kinds=("transmission", "vibration")),
     Effect(
+        name="encoder_interpolation",
+        description=("The twist encoder's interpolation error: a ripple that repeats once "
+                     "per signal period of its grating (an encoder of 9 000 – 36 000 lines "
+                     "reads a few per cent of a 36 – 144 arc-second period wrong), periodic "
+                     "in the measured angle, not in the torque."),
+        form=("y += Σ_k [a_k·sin(2πk·y/p) + b_k·cos(2πk·y/p)], k = 1 … 3, y the measured "
+              "twist, p the signal period (started at the residual's Lomb–Scargle peak "
+              "over the measured angle, then fitted within ±10 %); the harmonics are the "
+              "error's own and those of reading it at the measured, not the true, angle"),
+        parameters=(*(_linear(f"{ab}{k}", "rad", f"{part} part of harmonic {k}")
+                      for k in range(1, INTERPOLATION_HARMONICS + 1)
+                      for ab, part in (("a", "sine"), ("b", "cosine"))),
+                    Parameter("period", "rad", "signal period of the encoder", 0.9, 1.1,
+                              "angle_period", start=1.0)),
+        kinds=("torsion",)),
+    Effect(
         name="sensor_gain",
         description=("The output angle sensor's scale is off: the measured angle grows by "
                      "(1 + g) times the true one. The ratio is exact (tooth counts), so a "
@@ -92,7 +112,46 @@ def columns(name: str, inputs: dict[str, np.ndarray], step_position: float,
         return ["a", "b"], np.column_stack([np.sin(out), np.cos(out)])
     if name == "sensor_gain":
         return ["g"], inputs["output_angle_rad"]
+    if name == "encoder_interpolation":
+        phase = 2.0 * np.pi * inputs["measured_rad"] / theta["period"]
+        orders = range(1, INTERPOLATION_HARMONICS + 1)
+        return ([f"{ab}{k}" for k in orders for ab in "ab"],
+                np.column_stack([f(k * phase) for k in orders for f in (np.sin, np.cos)]))
     raise KeyError(name)
+
+
+# Periods an encoder's interpolation error is looked for at: at least PERIODS_MIN of them
+# over the measured span, and at least SAMPLES_PER_PERIOD rows per period on average.
+PERIODS_MIN = 3
+SAMPLES_PER_PERIOD = 8
+QUANTA_PER_PERIOD = 4
+
+
+def quantum(angle: np.ndarray) -> float:
+    """The step of a quantised reading (the smallest step between the values it takes when
+    it takes fewer than half as many values as it has rows), else 0."""
+    values = np.unique(angle)
+    if len(values) < 2 or len(values) >= len(angle) / 2:
+        return 0.0
+    return float(np.min(np.diff(values)))
+
+
+def angle_period(residual: np.ndarray, angle: np.ndarray) -> float:
+    """Signal period [unit of ``angle``] of the strongest ripple of ``residual`` that
+    repeats in the measured ``angle`` (the peak of the Lomb–Scargle periodogram over the
+    angle, the rows unevenly spread in it; Lomb 1976, Scargle 1982)."""
+    from scipy.signal import lombscargle
+
+    span = float(np.ptp(angle)) or 1.0
+    # a period near the step of a quantised reading would alias into a slow function of it
+    shortest = max(SAMPLES_PER_PERIOD * span / len(angle), QUANTA_PER_PERIOD * quantum(angle))
+    longest = span / PERIODS_MIN
+    if shortest >= longest:
+        return longest
+    # frequency steps of a quarter of the record's resolution 1/span
+    freqs = np.arange(1.0 / longest, 1.0 / shortest, 0.25 / span)
+    power = lombscargle(angle, residual - residual.mean(), 2.0 * np.pi * freqs)
+    return float(1.0 / freqs[int(np.argmax(power))])
 
 
 def warm_up(u: np.ndarray, tau: float) -> np.ndarray:

@@ -65,6 +65,10 @@ def select_rig(problem: Problem, start: Fit) -> tuple[Fit, list[dict], dict[str,
                 problem.step_position = rig.step_position(
                     current.residual(problem),
                     problem.base.inputs["record_position"][problem.rows])
+            if name == "encoder_interpolation":
+                problem.scales["angle_period"] = rig.angle_period(
+                    current.residual(problem),
+                    problem.base.inputs["measured_rad"][problem.rows])
             fits[name] = fit_model(problem, current.effects + (name,), current.theta)
         singles = {n: fit_model(problem, current.effects + (n,), current.theta) for n in gear}
         rivals = list(singles.values())

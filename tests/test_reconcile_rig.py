@@ -1,0 +1,71 @@
+"""Measurement-chain effects found in the data (:mod:`hdcad.reconcile.rig`): a twist
+encoder's interpolation error, a ripple periodic in the measured angle.
+
+The reconcile cases come from suite H (``truths/truth_h.py``, written by a helper from the
+contract only): its twist encoder of 9 000 – 36 000 lines reads the twist with an error
+periodic in the measured angle, a decoy that must not be named as a gear effect.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+
+import numpy as np
+import pytest
+from truth_runs import bench, named_case
+
+from hdcad.reconcile import rig
+
+
+@pytest.mark.parametrize("lines", [9000, 18000, 36000])
+def test_the_encoder_s_signal_period_is_found_in_unevenly_spread_angles(lines):
+    """A ripple of one signal period 2π/lines over a twist sampled unevenly (a triangular
+    torque through a stiffening spring crowds the rows near zero twist), under noise of a
+    third of its amplitude: the periodogram's peak is the period within 1 %."""
+    rng = np.random.default_rng(lines)
+    period = 2 * math.pi / lines
+    torque = np.interp(np.linspace(0, 4, 3000), [0, 1, 2, 3, 4], [0, 1, -1, 1, 0])
+    twist = 12 * period * np.sign(torque) * np.abs(torque) ** 0.7
+    ripple = 0.03 * period * np.sin(2 * math.pi * twist / period + 1.0)
+    residual = ripple + rng.normal(0, 0.01 * period, twist.size)
+    assert rig.angle_period(residual, twist) == pytest.approx(period, rel=0.01)
+
+
+@pytest.mark.parametrize("name", ["h-torsion-decoy_separable-none-interp-001",
+                                  "h-torsion-decoy_separable-none-interp-002"])
+def test_a_twist_encoder_s_interpolation_error_is_the_rig_s(name):
+    """Suite H's interpolation-error decoys (seed 11, 2 per cell): the second was named
+    backlash before. Both are read as the encoder's error, with its signal period within
+    1 % of the grating's (the line count is in the case's formulation), and no gear
+    effect."""
+    case = named_case("h", name, 11)
+    lines = int(re.search(r"\((\d+) lines/rev\)", case.formulation).group(1))
+    result = bench.reconcile_case(case)
+    assert result["missing_effects"] == []
+    found = {m["effect"]: m["params"] for m in result["measurement_effects"]}
+    assert found["encoder_interpolation"]["period"]["value"] == pytest.approx(
+        2 * math.pi / lines, rel=0.01)
+
+
+def test_a_quantised_reading_gives_no_ripple_at_its_step():
+    """A twist read in steps q (a coarse encoder, 40 steps over the span) carries a sawtooth
+    error periodic in the reading at q; a sinusoid near q, sampled only at multiples of q,
+    would alias into a slow function of the twist. The period is looked for at ≥ 4q."""
+    rng = np.random.default_rng(3)
+    twist = np.sort(rng.uniform(-1.0, 1.0, 4000)) * 2e-3
+    q = 1e-4
+    reading = q * np.round(twist / q)
+    assert rig.quantum(reading) == pytest.approx(q)
+    assert rig.quantum(twist) == 0.0
+    assert rig.angle_period(reading - twist, reading) >= 4 * q
+
+
+def test_a_housing_spring_under_quantised_noise_is_not_read_as_an_encoder_ripple():
+    """Suite D's bilinear bolted joint read by a quantised encoder (seed 11, 2 per cell):
+    with periods down to the quantum the ripple aliased into the joint's bend, and the
+    spring was named hysteresis with an encoder error."""
+    case = named_case("d", "d-torsion-single-housing_compliance-bolted-bilinear-001", 11)
+    result = bench.reconcile_case(case)
+    assert result["missing_effects"] == ["housing_compliance"]
+    assert "encoder_interpolation" not in [m["effect"] for m in result["measurement_effects"]]
