@@ -306,3 +306,19 @@ def test_corner_width_smooths_the_curve_without_moving_it_far():
     assert np.all(np.diff(smooth) > 0) and np.allclose(smooth, -smooth[::-1])
     jumps = abs(1 / curve.K2 - 1 / curve.K1) + abs(1 / curve.K3 - 1 / curve.K2)
     assert np.max(np.abs(smooth - sharp)) <= jumps * curve.T1 * math.log(2) * 2
+
+
+def test_the_printed_reading_is_the_seed_example_s_arithmetic():
+    """Seed 000 p.020, CSF-25-100 at 39 N·m: the worked example adds (T − T1)/K2 to the
+    printed θ1 and gets 9.4×10⁻⁴ rad (two digits: ±0.5 %). The T/K curve plus the printed
+    reading's departure (:func:`printed_departure`, the nuisance the baseline fits between
+    0 and 1) is that arithmetic exactly; below T1 the two readings agree."""
+    from hdcad.catalog import load_catalog
+    from hdcad.reconcile.baseline import printed_departure
+    curve, _ = stiffness_curve(resolve("CSF-25-100-2A-GR", load_catalog()))
+    torque = np.array([2.9, 39.0, -39.0])
+    printed = catalog_twist(curve, torque, 0.0) + printed_departure(curve, torque, 0.0)
+    by_hand = curve.theta1 + (39.0 - curve.T1) / curve.K2
+    np.testing.assert_allclose(printed[1:], [by_hand, -by_hand], rtol=1e-9)
+    assert printed[1] == pytest.approx(9.4e-4, rel=0.0055)
+    assert printed[0] == catalog_twist(curve, torque, 0.0)[0]

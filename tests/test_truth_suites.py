@@ -43,8 +43,15 @@ def test_pairs_both_named(scored):
     assert share(scored, "both") >= 0.65
 
 
-def test_few_wrong_second_names(scored):
-    assert share(scored, "wrong_second") <= 0.10
+# Suites over the common ceiling, with the reason. Suite I: its Armstrong–Frederick and
+# Cattaneo–Mindlin loops soften along their backbones, which reads as a housing spring
+# beside the loop (3 of its 4 hysteresis singles at 2 per cell; truths/README.md).
+WRONG_SECOND_CEILING = {"truth_i": 0.15}
+
+
+def test_few_wrong_second_names(scored, request):
+    ceiling = WRONG_SECOND_CEILING.get(request.node.callspec.id, 0.10)
+    assert share(scored, "wrong_second") <= ceiling
 
 
 def test_median_gap_shrink(scored):

@@ -67,9 +67,8 @@ class Baseline:
         curve with corner width ``catalog.corner_width``)."""
         if self.curve is None:
             return self.free[rows]
-        torque = self.inputs["torque_Nm"][rows]
-        curve = catalog_twist(self.curve, torque, theta.get("catalog.corner_width", 0.0))
-        return np.column_stack([curve, np.ones(len(torque))])
+        return _torsion_columns(self.curve, self.inputs["torque_Nm"][rows],
+                                theta.get("catalog.corner_width", 0.0))
 
 
 def _curve(model: GearModel, kind: str) -> tuple[StiffnessCurve, str]:
@@ -213,11 +212,58 @@ def torsion(data: dict, model: GearModel, catalog: Catalog) -> Baseline:
         f"catalog stiffness scatter: ±{STIFFNESS_SPREAD:.0%} assumed (seed 000 p.020 gives "
         "average values and no spread); a torque- or angle-sensor gain reads the same"]
     n = len(torque)
-    free = np.column_stack([catalog_twist(curve, torque, 0.0), np.ones(n)])
-    base = Baseline("torsion", data["twist_rad"], np.zeros(n), free,
-                    ("compliance_scale", "offset"), ("-", "rad"), "rad", figures, notes,
-                    {"torque_Nm": torque, "measured_rad": data["twist_rad"]}, curve)
+    free = _torsion_columns(curve, torque, 0.0)
+    names, units = ("compliance_scale", "offset"), ("-", "rad")
+    if free.shape[1] > 2:
+        names, units = names + ("printed_reading",), units + ("-",)
+        notes.append(_printed_note(curve))
+    base = Baseline("torsion", data["twist_rad"], np.zeros(n), free, names, units, "rad",
+                    figures, notes, {"torque_Nm": torque, "measured_rad": data["twist_rad"]},
+                    curve)
     return base
+
+
+def _torsion_columns(curve: StiffnessCurve, torque: np.ndarray, width: float) -> np.ndarray:
+    """The catalog twist, a constant and, where the tables print θ1/θ2, the printed
+    reading's departure from the defining data (:func:`printed_departure`)."""
+    columns = [catalog_twist(curve, torque, width), np.ones(len(torque))]
+    if _departures(curve):
+        columns.append(printed_departure(curve, torque, width))
+    return np.column_stack(columns)
+
+
+def _departures(curve: StiffnessCurve) -> list[tuple[float, float]]:
+    """(T1 or T2 [N·m], printed θ less the T/K data's θ there [rad]) where θ is printed."""
+    out = []
+    for (corner, _), printed in zip(_steps(curve), (curve.theta1, curve.theta2)):
+        if printed is None:
+            break
+        out.append((corner, printed - float(catalog_twist(curve, np.array([corner]), 0.0)[0])))
+    return out
+
+
+def printed_departure(curve: StiffnessCurve, torque_Nm: np.ndarray, width_Nm: float
+                      ) -> np.ndarray:
+    """The printed reading of the curve less the defining data's [rad]: θ = θ1 + (T − T1)/K2
+    above T1 with the printed θ1 (as seed 000 p.020's worked example reads it), not
+    T1/K1, and likewise θ2; steps at T1 and T2 (logistics of width w, as the compliance
+    steps of :func:`catalog_compliance`), odd in T."""
+    t = np.abs(np.asarray(torque_Nm, dtype=float))
+    w = max(float(width_Nm), 1e-9)
+    out, below = np.zeros_like(t), 0.0
+    for corner, departure in _departures(curve):
+        out = out + (departure - below) * 0.5 * (1.0 + np.tanh((t - corner) / (2.0 * w)))
+        below = departure
+    return np.sign(torque_Nm) * out
+
+
+def _printed_note(curve: StiffnessCurve) -> str:
+    words = " and ".join(f"θ{i} {abs(d):.3g} rad {'above' if d > 0 else 'below'}"
+                         for i, (_, d) in enumerate(_departures(curve), start=1))
+    return (f"the tables print {words} the T/K data's values: the curve is fitted anywhere "
+            "between the T/K data "
+            "(printed_reading 0) and the printed values (1), a nuisance (seed 000 p.020's "
+            "worked example reads the printed θ1)")
 
 
 def transmission(data: dict, model: GearModel, catalog: Catalog) -> Baseline:

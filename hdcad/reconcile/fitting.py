@@ -273,6 +273,7 @@ def columns(problem: Problem, effects: tuple[str, ...], theta: dict[str, float],
     # effect (or, for a stiffer gear, the nuisance report says so)
     spread = baselines.STIFFNESS_SPREAD
     bounds = {"compliance_scale": (1 / (1 + spread), 1 / (1 - spread)),
+              "printed_reading": (0.0, 1 / (1 - spread)),
               "scale_error": (-baselines.ANGLE_GAIN_LIMIT, baselines.ANGLE_GAIN_LIMIT)}
     lower = [bounds.get(n_, (-np.inf, np.inf))[0] for n_ in base.free_names]
     upper = [bounds.get(n_, (-np.inf, np.inf))[1] for n_ in base.free_names]

@@ -80,6 +80,12 @@ def nuisances(problem: Problem, fit: Fit) -> list[dict]:
     s = free_scale(problem, fit)
     if s is not None and s > 0:
         out.append(_scale_entry("stiffness_scale", 1.0 / s, "stiffness"))
+        printed = _beta(fit, "printed_reading")
+        if printed is not None:
+            share = printed / _beta(fit, "compliance_scale")
+            out.append({"name": "printed_reading", "value": share, "unit": "-",
+                        "text": f"catalog curve {share:.0%} of the way from the T/K data to "
+                                "the printed θ1/θ2"})
         width = fit.theta.get("catalog.corner_width")
         if width is not None:
             out.append({"name": "corner_width", "value": width, "unit": "N·m",

@@ -121,10 +121,13 @@ def columns(name: str, inputs: dict[str, np.ndarray], step_position: float,
 
 
 # Periods an encoder's interpolation error is looked for at: at least PERIODS_MIN of them
-# over the measured span, and at least SAMPLES_PER_PERIOD rows per period on average.
-PERIODS_MIN = 3
+# over the measured span (over fewer, a ripple and its harmonics are as much a smooth error
+# of the curve's shape, a play's or a joint's), and at least SAMPLES_PER_PERIOD rows per
+# period on average.
+PERIODS_MIN = 4
 SAMPLES_PER_PERIOD = 8
 QUANTA_PER_PERIOD = 4
+RIPPLE_SHARE_MIN = 0.25
 
 
 def quantum(angle: np.ndarray) -> float:
@@ -134,6 +137,19 @@ def quantum(angle: np.ndarray) -> float:
     if len(values) < 2 or len(values) >= len(angle) / 2:
         return 0.0
     return float(np.min(np.diff(values)))
+
+
+def ripple_everywhere(before: np.ndarray, after: np.ndarray, angle: np.ndarray) -> bool:
+    """An encoder's ripple is the same over the whole span of the angle: the fit that adds
+    it (residual ``after``, from ``before``) lowers the mean-square residual in each third
+    of the span by at least RIPPLE_SHARE_MIN of what it does over all rows. A structure at
+    one place (a play at zero twist) fitted by a few periods of ripple is not."""
+    edges = np.linspace(angle.min(), angle.max(), 4)
+    third = np.clip(np.searchsorted(edges, angle, side="right") - 1, 0, 2)
+    overall = np.mean(before ** 2) - np.mean(after ** 2)
+    gains = [np.mean(before[third == k] ** 2) - np.mean(after[third == k] ** 2)
+             for k in range(3) if np.any(third == k)]
+    return overall > 0 and min(gains) >= RIPPLE_SHARE_MIN * overall
 
 
 def angle_period(residual: np.ndarray, angle: np.ndarray) -> float:

@@ -76,17 +76,27 @@ def select_rig(problem: Problem, start: Fit) -> tuple[Fit, list[dict], dict[str,
         gates = {n: gate(problem, current, f, sigma, tau) for n, f in fits.items()}
         rival = max((gate(problem, current, f, sigma, tau).delta_bic for f in rivals),
                     default=-math.inf)
+        ok = {n: g.passes() and g.delta_bic > rival
+              and _rig_signature(problem, n, current, fits[n]) for n, g in gates.items()}
         table.append([{"effect": n, "delta_bic": g.delta_bic, "cv_gain": g.cv_gain,
-                       "explained_var_over_noise": g.explained,
-                       "passes": g.passes() and g.delta_bic > rival}
+                       "explained_var_over_noise": g.explained, "passes": ok[n]}
                       for n, g in gates.items()])
-        passing = [n for n, g in gates.items() if g.passes() and g.delta_bic > rival]
+        passing = [n for n in ok if ok[n]]
         if not passing:
             break
         best = max(passing, key=lambda n: gates[n].delta_bic)
         current, singles = fits[best], None
         names.remove(best)
     return current, table, singles
+
+
+def _rig_signature(problem: Problem, name: str, without: Fit, fit: Fit) -> bool:
+    """A measurement effect's own signature, beyond a better fit: an encoder's
+    interpolation ripple is the same over the whole span of the angle."""
+    if name != "encoder_interpolation":
+        return True
+    return rig.ripple_everywhere(without.residual(problem), fit.residual(problem),
+                                 problem.base.inputs["measured_rad"][problem.rows])
 
 
 def select_gear(problem: Problem, start: Fit, singles: dict[str, Fit] | None = None
