@@ -48,6 +48,17 @@ def test_a_twist_encoder_s_interpolation_error_is_the_rig_s(name):
         2 * math.pi / lines, rel=0.01)
 
 
+def test_the_readings_of_a_dwell_count_as_one_place():
+    """A staircase test reads the twist several times at each step (60 steps × 8 readings):
+    a ripple must have 8 places read per period, not 8 rows, or a short period with its
+    harmonics would thread the steps' noise (suite I's staircase records)."""
+    rng = np.random.default_rng(5)
+    steps = np.repeat(np.linspace(-1e-3, 1e-3, 60), 8)
+    reading = steps + rng.normal(0, 1e-7, steps.size)
+    residual = rng.normal(0, 1e-6, steps.size)
+    assert rig.angle_period(residual, reading) >= 8 * np.ptp(reading) / 60 * 0.99
+
+
 def test_a_quantised_reading_gives_no_ripple_at_its_step():
     """A twist read in steps q (a coarse encoder, 40 steps over the span) carries a sawtooth
     error periodic in the reading at q; a sinusoid near q, sampled only at multiples of q,

@@ -122,8 +122,8 @@ def columns(name: str, inputs: dict[str, np.ndarray], step_position: float,
 
 # Periods an encoder's interpolation error is looked for at: at least PERIODS_MIN of them
 # over the measured span (over fewer, a ripple and its harmonics are as much a smooth error
-# of the curve's shape, a play's or a joint's), and at least SAMPLES_PER_PERIOD rows per
-# period on average.
+# of the curve's shape, a play's or a joint's), and at least SAMPLES_PER_PERIOD places read
+# per period on average.
 PERIODS_MIN = 4
 SAMPLES_PER_PERIOD = 8
 QUANTA_PER_PERIOD = 4
@@ -154,20 +154,26 @@ def ripple_everywhere(before: np.ndarray, after: np.ndarray, angle: np.ndarray) 
 
 def angle_period(residual: np.ndarray, angle: np.ndarray) -> float:
     """Signal period [unit of ``angle``] of the strongest ripple of ``residual`` that
-    repeats in the measured ``angle`` (the peak of the Lomb–Scargle periodogram over the
-    angle, the rows unevenly spread in it; Lomb 1976, Scargle 1982)."""
-    from scipy.signal import lombscargle
-
+    repeats in the measured ``angle``: the peak of the periodogram over the angle, the rows
+    (unevenly spread in it) summed into bins of a uniform grid of a quarter of the shortest
+    period and transformed by FFT, zero-padded to steps of a quarter of the record's
+    resolution 1/span (a gridded Lomb–Scargle periodogram; Press & Rybicki 1989)."""
     span = float(np.ptp(angle)) or 1.0
-    # a period near the step of a quantised reading would alias into a slow function of it
-    shortest = max(SAMPLES_PER_PERIOD * span / len(angle), QUANTA_PER_PERIOD * quantum(angle))
+    # rows at the same angle (the readings of a dwell) count once; a period near the step of
+    # a quantised reading would alias into a slow function of it
+    places = np.unique(np.minimum(((angle - angle.min()) / span * len(angle)).astype(int),
+                                  len(angle) - 1)).size
+    shortest = max(SAMPLES_PER_PERIOD * span / places, QUANTA_PER_PERIOD * quantum(angle))
     longest = span / PERIODS_MIN
     if shortest >= longest:
         return longest
-    # frequency steps of a quarter of the record's resolution 1/span
-    freqs = np.arange(1.0 / longest, 1.0 / shortest, 0.25 / span)
-    power = lombscargle(angle, residual - residual.mean(), 2.0 * np.pi * freqs)
-    return float(1.0 / freqs[int(np.argmax(power))])
+    bins = int(np.ceil(4 * span / shortest))
+    index = np.minimum(((angle - angle.min()) / span * bins).astype(int), bins - 1)
+    summed = np.bincount(index, residual - residual.mean(), bins)
+    power = np.abs(np.fft.rfft(summed, 4 * bins)) ** 2
+    freqs = np.fft.rfftfreq(4 * bins, span / bins)
+    inside = (freqs >= 1.0 / longest) & (freqs <= 1.0 / shortest)
+    return float(1.0 / freqs[inside][int(np.argmax(power[inside]))])
 
 
 def warm_up(u: np.ndarray, tau: float) -> np.ndarray:
