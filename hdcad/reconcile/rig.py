@@ -72,9 +72,10 @@ RIG_EFFECTS: dict[str, Effect] = {e.name: e for e in (
                      "reads a few per cent of a 36 – 144 arc-second period wrong), periodic "
                      "in the measured angle, not in the torque."),
         form=("y += Σ_k [a_k·sin(2πk·y/p) + b_k·cos(2πk·y/p)], k = 1 … 3, y the measured "
-              "twist, p the signal period (started at the residual's Lomb–Scargle peak "
-              "over the measured angle, then fitted within ±10 %); the harmonics are the "
-              "error's own and those of reading it at the measured, not the true, angle"),
+              "twist, p the signal period (started at the peak of the residual's "
+              "periodogram over the measured angle, then fitted within ±10 %); the "
+              "harmonics are the error's own and those of reading it at the measured, not "
+              "the true, angle"),
         parameters=(*(_linear(f"{ab}{k}", "rad", f"{part} part of harmonic {k}")
                       for k in range(1, INTERPOLATION_HARMONICS + 1)
                       for ab, part in (("a", "sine"), ("b", "cosine"))),
@@ -157,7 +158,8 @@ def angle_period(residual: np.ndarray, angle: np.ndarray) -> float:
     repeats in the measured ``angle``: the peak of the periodogram over the angle, the rows
     (unevenly spread in it) summed into bins of a uniform grid of a quarter of the shortest
     period and transformed by FFT, zero-padded to steps of a quarter of the record's
-    resolution 1/span (a gridded Lomb–Scargle periodogram; Press & Rybicki 1989)."""
+    resolution 1/span (a binned stand-in for the Lomb–Scargle periodogram of unevenly
+    sampled data; Lomb 1976, Scargle 1982)."""
     span = float(np.ptp(angle)) or 1.0
     # rows at the same angle (the readings of a dwell) count once; a period near the step of
     # a quantised reading would alias into a slow function of it
