@@ -129,8 +129,7 @@ class PreisachPlane:
 
     def __init__(self, torque_Nm: np.ndarray, T0: float):
         self.T0 = T0
-        self.n = len(torque_Nm)
-        self.terms = term_matrix(everett_terms(torque_Nm, T0), self.n)
+        self.terms = term_matrix(everett_terms(torque_Nm, T0), len(torque_Nm))
         self.grid = np.linspace(-T0, T0, _MAJOR_POINTS)
         history = np.concatenate([np.linspace(0.0, T0, _MAJOR_POINTS), self.grid[::-1],
                                   self.grid])
