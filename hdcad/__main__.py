@@ -1,5 +1,3 @@
-import sys
+from ._entry import leave, run
 
-from ._entry import run
-
-sys.exit(run())
+leave(run())

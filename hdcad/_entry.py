@@ -4,6 +4,7 @@ instead of a traceback (the interpreter's own start-up is the only window left).
 
 from __future__ import annotations
 
+import os
 import signal
 import sys
 
@@ -15,9 +16,14 @@ def remember(signum, frame) -> None:
     caught.append(signum)
 
 
-def run() -> int:
+def arm() -> None:
+    """Remember Ctrl-C from here on, unless someone else already handles it."""
     if signal.getsignal(signal.SIGINT) is signal.default_int_handler:
         signal.signal(signal.SIGINT, remember)
+
+
+def run() -> int:
+    arm()
     try:
         try:
             from .cli import main
@@ -32,3 +38,20 @@ def run() -> int:
             print("hdcad: interrupted", file=sys.stderr)
         code = 130
     return code
+
+
+def leave(code: int) -> None:
+    """End ``python -m hdcad`` (or ``-m hdcad.cli``) with ``code``.
+
+    CPython's ``-m`` runner ends the process by SIGINT, whatever the exit code, once a
+    KeyboardInterrupt has escaped any embedded ``PyRun_*`` call, even one that Python code
+    caught later (a process-wide flag it never clears). An interrupted run has cleaned up and
+    answered by now, so it leaves by ``os._exit`` once its output is flushed."""
+    if code != 130:
+        sys.exit(code)
+    for stream in (sys.stdout, sys.stderr):
+        try:
+            stream.flush()
+        except (OSError, ValueError):
+            pass
+    os._exit(code)

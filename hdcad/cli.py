@@ -8,13 +8,18 @@ interrupted (Ctrl-C). Commands that need no geometry never import cadquery.
 
 from __future__ import annotations
 
+from . import _entry
+
+if __name__ == "__main__":  # ``python -m hdcad.cli``: remember Ctrl-C while the rest loads
+    _entry.arm()
+
 import argparse
 import os
 import signal
 import sys
 from typing import Sequence
 
-from . import __version__, _entry
+from . import __version__
 from .errors import InputError
 from .report.format import check_label, fmt, margin_text, relation_text, status_text
 
@@ -415,4 +420,4 @@ def main(argv: Sequence[str] | None = None) -> int:
 if __name__ == "__main__":
     # the console command's entry (a Ctrl-C still pending once main has answered must not
     # end in a death by SIGINT) for ``python -m hdcad.cli`` too
-    sys.exit(_entry.run())
+    _entry.leave(_entry.run())

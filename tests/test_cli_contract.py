@@ -126,6 +126,23 @@ def test_ctrl_c_during_a_design_leaves_nothing_behind(tmp_path, delay_s):
     assert err.strip() == "hdcad: interrupted" and os.listdir(tmp_path) == []
 
 
+def test_an_interrupted_module_run_leaves_with_130_and_its_output(tmp_path):
+    """``python -m`` ends the process by SIGINT, whatever the exit code, once a
+    KeyboardInterrupt escaped an embedded ``PyRun_*`` call that Python code later caught (as
+    an import interrupted inside a C extension does): ``_entry.leave`` keeps 130 and flushes
+    what was printed."""
+    (tmp_path / "interrupted_once.py").write_text(
+        "import ctypes\n"
+        "ctypes.pythonapi.PyRun_SimpleString(b'raise KeyboardInterrupt')\n"
+        "print('the answer')\n"
+        "from hdcad._entry import leave\n"
+        "leave(130)\n")
+    done = subprocess.run([sys.executable, "-m", "interrupted_once"], cwd=tmp_path,
+                          capture_output=True, text=True,
+                          env=dict(os.environ, PYTHONPATH=os.pathsep.join(sys.path)))
+    assert (done.returncode, done.stdout) == (130, "the answer\n")
+
+
 def test_a_ctrl_c_after_the_answer_is_given_keeps_exit_130(monkeypatch, capsys):
     """A Ctrl-C whose handler runs only after the command line answered (the interpreter runs
     a pending signal's handler at its next chance) must not end in a death by SIGINT or a
