@@ -162,7 +162,7 @@ def reconcile(kind: str, data: dict, model: GearModel, catalog: Catalog,
         r = (base.y - fit.prediction)[keep]
         return noise_rms(r) or _rmse(r)
 
-    named = best.effects if best else ()
+    named = _by_weight(best.effects, candidates) if best else ()
     resid0 = (base.y - start.prediction)
     residual = base.y - final.prediction
     sigma = sigma_of(final)
@@ -178,6 +178,14 @@ def reconcile(kind: str, data: dict, model: GearModel, catalog: Catalog,
                    + readings.undecided(named, best.undecided if best else ())
                    + readings.series_slip(bool(best and best.series_slip))
                    + readings.progressive_spring(bool(best and best.progressive)))
+
+
+def _by_weight(effects: tuple[str, ...], candidates) -> tuple[str, ...]:
+    """The named gear effects, the one that explains the most alone (ΔBIC) first: a pair's
+    order otherwise follows the search (a play read again as a stiffening spring keeps the
+    play's place)."""
+    alone = {c.effects[0]: c.gate.delta_bic for c in candidates if len(c.effects) == 1}
+    return tuple(sorted(effects, key=lambda e: -alone.get(e, math.inf)))
 
 
 def _steps(problem, named, candidates, final, keep) -> list[Step]:
