@@ -289,3 +289,22 @@ def test_efficiency_as_a_fraction_is_converted():
     data = {"efficiency_pct": np.full(50, 0.82), "load_torque_Nm": np.full(50, 100.0)}
     (fix,) = find_fix("efficiency", data, rated_torque=100.0)
     assert fix.column == "efficiency_pct" and fix.factor == 100.0 and "fraction" in fix.reading
+
+
+@pytest.mark.parametrize("seed, name", [
+    (7, "i-torsion-decoy-separable-torque-knm-torque-knm-000"),
+    (13, "i-torsion-decoy-separable-torque-knm-torque-knm-001"),
+])
+def test_torque_in_kn_m_is_told_from_twist_in_mrad_by_the_curve_s_corners(seed, name):
+    """Suite I's torque recorded in kN·m (``truths/truth_i.py``, written from the contract
+    only). Against the catalog curve, dividing the twist by 1000 (mrad) gives a scale of
+    0.96, nearer 1 than the right reading's 1.06–1.12 (the gear's own scatter), but it puts
+    every torque on the curve's first segment: the shape misfit is 2.5–7× the kN·m
+    reading's. With the twist divided, a backlash was named (ΔBIC 484)."""
+    from truth_runs import bench, named_case
+    case = named_case("i", name, seed)
+    result = bench.reconcile_case(case)
+    (fix,) = [m for m in result["measurement_effects"] if m["effect"] == "wrong_units"]
+    assert fix["column"] == "torque_Nm" and fix["factor"] == 1000.0
+    assert result["missing_effects"] == []
+    assert result["rmse_after"] <= 1.2 * case.noise_rms

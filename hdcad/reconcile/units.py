@@ -31,6 +31,9 @@ MATCH = 2.0
 # Efficiency tests run up to about rated torque (seed 000 p.023): a largest load below this
 # share of the rated torque is a torque in kN·m.
 TINY_LOAD = 0.01
+# Two torsion unit readings whose shape misfits against the catalog curve are within this
+# factor fit equally well (the test stayed on the curve's first segment)
+SHAPE_TIE = 1.1
 
 
 @dataclass(frozen=True)
@@ -64,6 +67,27 @@ def torsion_scale(data: dict, twist_of) -> float:
     measured = data["twist_rad"] - np.mean(data["twist_rad"])
     expected = _rms(catalog - np.mean(catalog))
     return _rms(measured) / expected if expected > 0 else 1.0
+
+
+def shape_misfit(data: dict, twist_of) -> float:
+    """RMS of the measured twist about the catalog curve scaled and offset to it (least
+    squares), as a share of the twist's RMS about its mean [-]."""
+    y = data["twist_rad"]
+    X = np.column_stack([twist_of(data["torque_Nm"]), np.ones_like(y)])
+    residual = y - X @ np.linalg.lstsq(X, y, rcond=None)[0]
+    spread = _rms(y - np.mean(y))
+    return _rms(residual) / spread if spread > 0 else 0.0
+
+
+def torsion_fix(data: dict, fixes: list[UnitFix], twist_of) -> UnitFix:
+    """The unit fix whose reading the catalog curve fits best. kN·m torque and a twist in
+    mrad give the same scale against a linear curve, but the curve stiffens at T1 and T2:
+    only the right torque unit puts those corners where the data bend. The shape decides
+    (misfits within ``SHAPE_TIE`` of the best count as equal), then the scale nearest 1."""
+    misfit = {fix: shape_misfit(apply(data, [fix]), twist_of) for fix in fixes}
+    best = min(misfit.values())
+    tied = [fix for fix in fixes if misfit[fix] <= SHAPE_TIE * best]
+    return min(tied, key=lambda f: abs(math.log(torsion_scale(apply(data, [f]), twist_of))))
 
 
 def find_fix(kind: str, data: dict, twist_of=None, ratio: float | None = None,

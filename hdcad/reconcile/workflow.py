@@ -106,8 +106,7 @@ def _baseline(kind, data, model, catalog, load_inertia_kgm2):
     twist = baselines.catalog_curve(model) if kind == "torsion" else None
     fixes = units.find_fix(kind, data, twist, float(model.ratio), rated)
     if kind == "torsion" and fixes:  # kN·m or mrad: keep the reading the catalog fits best
-        fixes = [min(fixes, key=lambda f: abs(math.log(units.torsion_scale(
-            units.apply(data, [f]), twist))))]
+        fixes = [units.torsion_fix(data, fixes, twist)]
     data = units.apply(data, fixes)
     return baselines.build(kind, data, model, catalog, load_inertia_kgm2), fixes
 
