@@ -260,6 +260,8 @@ def scaled_example(tmp_path, column: str, factor: float):
 
 @pytest.mark.parametrize("column, factor, words", [
     ("twist_rad", 180 / math.pi, "degrees instead of radians"),
+    ("twist_rad", 60 * 180 / math.pi, "arc-minutes instead of radians"),
+    ("twist_rad", 3600 * 180 / math.pi, "arc-seconds instead of radians"),
     ("torque_Nm", 1e-3, "kN·m"),
 ])
 def test_data_in_wrong_units_are_converted_and_named_as_the_rig(tmp_path, capsys, column,
@@ -308,3 +310,17 @@ def test_torque_in_kn_m_is_told_from_twist_in_mrad_by_the_curve_s_corners(seed, 
     assert fix["column"] == "torque_Nm" and fix["factor"] == 1000.0
     assert result["missing_effects"] == []
     assert result["rmse_after"] <= 1.2 * case.noise_rms
+
+
+def test_an_output_angle_in_arc_seconds_is_converted():
+    """Suite J's transmission record with the output angle in arc-seconds (the unit of the
+    catalog's accuracy tables, seed 003 tables 051-1/059-1) was refused as bad input at its
+    held-out score (the output turned 2.06e5 × input / ratio); it is converted and named as
+    the rig, and no gear effect is named."""
+    from truth_runs import bench, named_case
+    case = named_case("j", "j-transmission-decoy_separable-wrong_units-arcsec-000", 11)
+    result = bench.reconcile_case(case)
+    (fix,) = result["measurement_effects"]
+    assert fix["column"] == "output_angle_rad" and "arc-seconds" in fix["reading"]
+    assert fix["factor"] == pytest.approx(math.pi / (180 * 3600), rel=1e-12)
+    assert result["missing_effects"] == []

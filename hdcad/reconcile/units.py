@@ -1,8 +1,8 @@
 """Channels in the wrong unit: found before any fit, corrected and reported as a rig finding.
 
-A channel recorded in the wrong unit (degrees for radians, kN·m for N·m, efficiency as a
-fraction) scales the data by 57.3, 1000 or 0.01 against the catalog: no physical effect does
-that. The catalog's stiffness is an average (seed 000 p.020) and real gears scatter by tens
+A channel recorded in the wrong unit (degrees, arc-minutes or arc-seconds for radians, kN·m
+for N·m, efficiency as a fraction) scales the data by 57.3, 3438, 206265, 1000 or 0.01
+against the catalog: no physical effect does that. The catalog's stiffness is an average (seed 000 p.020) and real gears scatter by tens
 of percent, hysteresis and play add to the twist at small torque, so only a factor beyond
 ``IMPLAUSIBLE`` (5) is taken as a unit error. When the factor is one of the usual unit
 mistakes the channel is converted and the finding reported (``wrong_units``, a
@@ -50,11 +50,22 @@ class UnitFix:
                 "reading": self.reading, "observed_scale": self.observed_scale}
 
 
+# the catalog's own angle units: twist in arc-min (seed 000 p.020's worked example, seed 003's
+# stiffness tables), transmission accuracy in arc-sec (seed 003 tables 051-1 and 059-1)
+ANGLE_UNITS = (("degrees", DEG_PER_RAD), ("arc-minutes", 60.0 * DEG_PER_RAD),
+               ("arc-seconds", 3600.0 * DEG_PER_RAD))
+
+
+def _angle_fixes(column: str, what: str) -> tuple:
+    return tuple((column, 1 / per_rad, f"{what} in {unit} instead of radians", per_rad)
+                 for unit, per_rad in ANGLE_UNITS)
+
+
 # (column, factor applied, reading, the scale it explains) per kind
-TORSION_FIXES = (("twist_rad", 1 / DEG_PER_RAD, "twist in degrees instead of radians",
-                  DEG_PER_RAD),
-                 ("torque_Nm", 1000.0, "torque in kN·m instead of N·m", 1000.0),
-                 ("twist_rad", 1e-3, "twist in mrad instead of rad", 1000.0))
+TORSION_FIXES = _angle_fixes("twist_rad", "twist") + (
+    ("torque_Nm", 1000.0, "torque in kN·m instead of N·m", 1000.0),
+    ("twist_rad", 1e-3, "twist in mrad instead of rad", 1000.0))
+TRANSMISSION_FIXES = _angle_fixes("output_angle_rad", "output angle")
 
 
 def _rms(values: np.ndarray) -> float:
@@ -109,9 +120,9 @@ def find_fix(kind: str, data: dict, twist_of=None, ratio: float | None = None,
         x, y = data["input_angle_rad"], data["output_angle_rad"]
         if np.ptp(x) > 0:
             scale = abs(np.polyfit(x, y, 1)[0]) * ratio
-            if DEG_PER_RAD / MATCH <= scale <= DEG_PER_RAD * MATCH:
-                return [UnitFix("output_angle_rad", 1 / DEG_PER_RAD,
-                                "output angle in degrees instead of radians", scale)]
+            for column, factor, reading, explains in TRANSMISSION_FIXES:
+                if explains / MATCH <= scale <= explains * MATCH:
+                    return [UnitFix(column, factor, reading, scale)]
             if not 1 / IMPLAUSIBLE <= scale <= IMPLAUSIBLE:
                 raise InputError("output_angle_rad", f"the output turns {scale:.3g} × input "
                                  "angle / ratio: probably wrong units or the wrong model")
