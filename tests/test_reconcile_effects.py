@@ -322,3 +322,43 @@ def test_the_printed_reading_is_the_seed_example_s_arithmetic():
     np.testing.assert_allclose(printed[1:], [by_hand, -by_hand], rtol=1e-9)
     assert printed[1] == pytest.approx(9.4e-4, rel=0.0055)
     assert printed[0] == catalog_twist(curve, torque, 0.0)[0]
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_bounded_solve_matches_bvls_on_the_full_rows(seed):
+    """``fitting.solve`` folds the rows into the columns' triangular factor before the bounded
+    solver: the solution must be BVLS's on the n × p system (scipy's ``lsq_linear``), with
+    near-collinear columns (a catalog curve and its printed reading) and bounds active."""
+    from scipy.optimize import lsq_linear
+
+    from hdcad.reconcile.fitting import solve
+    rng = np.random.default_rng(seed)
+    t = np.linspace(-1.0, 1.0, 2000)
+    X = np.column_stack([t + 0.1 * t ** 3, np.ones_like(t), t + 0.12 * t ** 3,
+                         np.tanh(t / 0.05), rng.standard_normal(len(t)) * 1e-3])
+    y = X @ rng.normal(0.0, 1.0, X.shape[1]) + 0.01 * rng.standard_normal(len(t))
+    lower = np.array([0.9, -np.inf, 0.0, 0.0, -np.inf])
+    upper = np.array([1.1, np.inf, 1.1, np.inf, np.inf])
+    norm = np.sqrt(np.mean(X * X, axis=0))
+    expected = lsq_linear(X / norm, y, bounds=(lower * norm, upper * norm),
+                          method="bvls").x / norm
+    found = solve(X, y, lower, upper)
+    assert np.sum((X @ found - y) ** 2) == pytest.approx(np.sum((X @ expected - y) ** 2),
+                                                         rel=1e-9)
+    np.testing.assert_allclose(found, expected, rtol=1e-6, atol=1e-9)
+
+
+def test_the_catalog_columns_kept_by_corner_width_are_the_ones_computed():
+    """The torsion baseline keeps its free columns by corner width (a fit moves one width
+    at a time); what it returns, on every row or a subset, after more widths than it keeps,
+    is what the curve gives."""
+    from hdcad.catalog import load_catalog
+    from hdcad.reconcile import baseline as bl
+    catalog = load_catalog()
+    torque = triangle(400.0, 2, 1200)
+    base = bl.build("torsion", {"torque_Nm": torque, "twist_rad": np.zeros_like(torque)},
+                    resolve("CSF-32-100-GH", catalog), catalog)
+    rows = np.arange(0, len(torque), 7)
+    for width in [0.0, 2.0, 5.0] + [float(w) for w in range(10, 10 + bl._WIDTHS_KEPT)] + [2.0]:
+        got = base.free_columns({"catalog.corner_width": width}, rows)
+        np.testing.assert_array_equal(got, bl._torsion_columns(base.curve, torque[rows], width))

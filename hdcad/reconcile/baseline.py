@@ -61,14 +61,25 @@ class Baseline:
     inputs: dict[str, np.ndarray] = field(default_factory=dict)
     curve: StiffnessCurve | None = None
     spring: StiffnessCurve | None = None  # vibration: the joint's catalog curve
+    # torsion: the free columns on every row by corner width, the last few (a fit moves the
+    # width in one of its directions only)
+    _by_width: dict = field(default_factory=dict, repr=False, compare=False)
 
     def free_columns(self, theta: dict[str, float], rows=slice(None)) -> np.ndarray:
         """The free columns on ``rows`` with the nuisance shape ``theta`` (torsion: the catalog
         curve with corner width ``catalog.corner_width``)."""
         if self.curve is None:
             return self.free[rows]
-        return _torsion_columns(self.curve, self.inputs["torque_Nm"][rows],
-                                theta.get("catalog.corner_width", 0.0))
+        torque = self.inputs["torque_Nm"]
+        key = (float(theta.get("catalog.corner_width", 0.0)), id(torque))
+        if key not in self._by_width:
+            if len(self._by_width) >= _WIDTHS_KEPT:
+                del self._by_width[next(iter(self._by_width))]
+            self._by_width[key] = _torsion_columns(self.curve, torque, key[0])
+        return self._by_width[key][rows]
+
+
+_WIDTHS_KEPT = 8
 
 
 def _curve(model: GearModel, kind: str) -> tuple[StiffnessCurve, str]:
