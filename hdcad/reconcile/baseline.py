@@ -61,9 +61,9 @@ class Baseline:
     inputs: dict[str, np.ndarray] = field(default_factory=dict)
     curve: StiffnessCurve | None = None
     spring: StiffnessCurve | None = None  # vibration: the joint's catalog curve
-    # torsion: the free columns on every row by corner width, the last few (a fit moves the
-    # width in one of its directions only)
-    _by_width: dict = field(default_factory=dict, repr=False, compare=False)
+    # torsion: the free columns by corner width and rows, the last few (a fit moves the width
+    # in one of its directions at a time, on the same rows)
+    _kept: dict = field(default_factory=dict, repr=False, compare=False)
 
     def free_columns(self, theta: dict[str, float], rows=slice(None)) -> np.ndarray:
         """The free columns on ``rows`` with the nuisance shape ``theta`` (torsion: the catalog
@@ -71,12 +71,16 @@ class Baseline:
         if self.curve is None:
             return self.free[rows]
         torque = self.inputs["torque_Nm"]
-        key = (float(theta.get("catalog.corner_width", 0.0)), id(torque))
-        if key not in self._by_width:
-            if len(self._by_width) >= _WIDTHS_KEPT:
-                del self._by_width[next(iter(self._by_width))]
-            self._by_width[key] = _torsion_columns(self.curve, torque, key[0])
-        return self._by_width[key][rows]
+        width = float(theta.get("catalog.corner_width", 0.0))
+        every = isinstance(rows, slice) and rows == slice(None)
+        key = (width, id(torque), None if every else id(rows))
+        kept = self._kept.get(key)
+        if kept is None or kept[0] is not torque or not (every or kept[1] is rows):
+            if len(self._kept) >= _WIDTHS_KEPT:
+                del self._kept[next(iter(self._kept))]
+            kept = (torque, rows, _torsion_columns(self.curve, torque[rows], width))
+            self._kept[key] = kept
+        return kept[2]
 
 
 _WIDTHS_KEPT = 8
