@@ -356,19 +356,18 @@ def _viscosity(problem: Problem, effects: tuple[str, ...], theta: dict, inp: dic
 
 
 def solve(X: np.ndarray, y: np.ndarray, lower: np.ndarray, upper: np.ndarray) -> np.ndarray:
-    """Linear least squares with bounds, on columns scaled to unit RMS. The rows are folded
-    into the columns' triangular factor first (X = QR: ‖Xb − y‖² = ‖Rb − Qᵀy‖² + const), so
-    that the bounded solver's iterations work on p × p instead of n × p."""
+    """Linear least squares with bounds, on columns scaled to unit RMS. When the free
+    solution leaves the bounds, the rows are folded into the columns' triangular factor
+    (X = QR: ‖Xb − y‖² = ‖Rb − Qᵀy‖² + const), so that the bounded solver's iterations work
+    on p × p instead of n × p."""
     norm = np.sqrt(np.mean(X * X, axis=0))
     norm[norm == 0] = 1.0
-    Q, R = np.linalg.qr(X / norm)
-    target = Q.T @ y
-    # the cut-off lstsq would use on the n × p system
-    cutoff = np.finfo(float).eps * max(X.shape)
-    beta = np.linalg.lstsq(R, target, rcond=cutoff)[0]
+    Xs = X / norm
+    beta = np.linalg.lstsq(Xs, y, rcond=None)[0]
     lo, hi = lower * norm, upper * norm
     if np.any(beta < lo) or np.any(beta > hi):
-        beta = lsq_linear(R, target, bounds=(lo, hi), method="bvls").x
+        Q, R = np.linalg.qr(Xs)
+        beta = lsq_linear(R, Q.T @ y, bounds=(lo, hi), method="bvls").x
     return beta / norm
 
 
