@@ -67,14 +67,15 @@ class Baseline:
 
     def free_columns(self, theta: dict[str, float], rows=slice(None)) -> np.ndarray:
         """The free columns on ``rows`` with the nuisance shape ``theta`` (torsion: the catalog
-        curve with corner width ``catalog.corner_width``)."""
+        curve with corner width ``catalog.corner_width``; the array is kept for the next
+        call, so it is read only)."""
         if self.curve is None:
             return self.free[rows]
         torque = self.inputs["torque_Nm"]
         width = float(theta.get("catalog.corner_width", 0.0))
         every = isinstance(rows, slice) and rows == slice(None)
-        key = (width, id(torque), None if every else id(rows))
-        kept = self._kept.get(key)
+        key = (width, None if every else id(rows))
+        kept = self._kept.get(key)  # the same torque and rows objects, not merely their ids
         if kept is None or kept[0] is not torque or not (every or kept[1] is rows):
             if len(self._kept) >= _WIDTHS_KEPT:
                 del self._kept[next(iter(self._kept))]

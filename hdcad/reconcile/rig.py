@@ -163,19 +163,22 @@ def angle_period(residual: np.ndarray, angle: np.ndarray) -> float:
     span = float(np.ptp(angle)) or 1.0
     # rows at the same angle (the readings of a dwell) count once; a period near the step of
     # a quantised reading would alias into a slow function of it
-    places = np.unique(np.minimum(((angle - angle.min()) / span * len(angle)).astype(int),
-                                  len(angle) - 1)).size
+    places = np.unique(_bins(angle, span, len(angle))).size
     shortest = max(SAMPLES_PER_PERIOD * span / places, QUANTA_PER_PERIOD * quantum(angle))
     longest = span / PERIODS_MIN
     if shortest >= longest:
         return longest
     bins = int(np.ceil(4 * span / shortest))
-    index = np.minimum(((angle - angle.min()) / span * bins).astype(int), bins - 1)
-    summed = np.bincount(index, residual - residual.mean(), bins)
+    summed = np.bincount(_bins(angle, span, bins), residual - residual.mean(), bins)
     power = np.abs(np.fft.rfft(summed, 4 * bins)) ** 2
     freqs = np.fft.rfftfreq(4 * bins, span / bins)
     inside = (freqs >= 1.0 / longest) & (freqs <= 1.0 / shortest)
     return float(1.0 / freqs[inside][int(np.argmax(power[inside]))])
+
+
+def _bins(angle: np.ndarray, span: float, count: int) -> np.ndarray:
+    """The bin (0 … count − 1) of each angle on a uniform grid of ``count`` over the span."""
+    return np.minimum(((angle - angle.min()) / span * count).astype(int), count - 1)
 
 
 def warm_up(u: np.ndarray, tau: float) -> np.ndarray:

@@ -2,8 +2,9 @@
 
 A channel recorded in the wrong unit (degrees, arc-minutes or arc-seconds for radians, kN·m
 for N·m, efficiency as a fraction) scales the data by 57.3, 3438, 206265, 1000 or 0.01
-against the catalog: no physical effect does that. The catalog's stiffness is an average (seed 000 p.020) and real gears scatter by tens
-of percent, hysteresis and play add to the twist at small torque, so only a factor beyond
+against the catalog: no physical effect does that. The catalog's stiffness is an average
+(seed 000 p.020) and real gears scatter by tens of percent, hysteresis and play add to the
+twist at small torque, so only a factor beyond
 ``IMPLAUSIBLE`` (5) is taken as a unit error. When the factor is one of the usual unit
 mistakes the channel is converted and the finding reported (``wrong_units``, a
 measurement-chain effect); when it is not, reconcile stops with a bad-input message.
@@ -95,10 +96,11 @@ def torsion_fix(data: dict, fixes: list[UnitFix], twist_of) -> UnitFix:
     mrad give the same scale against a linear curve, but the curve stiffens at T1 and T2:
     only the right torque unit puts those corners where the data bend. The shape decides
     (misfits within ``SHAPE_TIE`` of the best count as equal), then the scale nearest 1."""
-    misfit = {fix: shape_misfit(apply(data, [fix]), twist_of) for fix in fixes}
+    read = {fix: apply(data, [fix]) for fix in fixes}
+    misfit = {fix: shape_misfit(read[fix], twist_of) for fix in fixes}
     best = min(misfit.values())
     tied = [fix for fix in fixes if misfit[fix] <= SHAPE_TIE * best]
-    return min(tied, key=lambda f: abs(math.log(torsion_scale(apply(data, [f]), twist_of))))
+    return min(tied, key=lambda f: abs(math.log(torsion_scale(read[f], twist_of))))
 
 
 def find_fix(kind: str, data: dict, twist_of=None, ratio: float | None = None,
