@@ -342,6 +342,7 @@ def vibration(data: dict, model: GearModel, catalog: Catalog,
     figures = catalog_figures(model, catalog)
     figures["K1_Nm_per_rad"] = (curve.K1, source)
     figures["J_kgm2"] = (float(load_inertia_kgm2), "--load-inertia")
+    figures["ratio"] = (float(model.ratio), "model code")
     fn = math.sqrt(curve.K1 / load_inertia_kgm2) / (2 * math.pi)
     notes = [f"f_n = √(K1/J)/2π = {fn:.4g} Hz; te_2x resonance at {fn * 30:.4g} r/min, "
              f"te_1x at {fn * 60:.4g} r/min (seed 000 p.021)"]

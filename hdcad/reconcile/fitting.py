@@ -20,9 +20,9 @@ from scipy.optimize import least_squares, lsq_linear
 
 from . import baseline as baselines
 from . import effects as fx
-from . import joint
 from . import preisach
 from . import rig
+from .harmonics import TE_ORDER, harmonic, overtones_of, te_column_labels
 
 # Above this many rows the fit uses this many rows drawn at random (fixed seed; time order
 # kept, torque turning points added) — even steps could alias an efficiency grid sweep;
@@ -40,22 +40,6 @@ FIGURE_KINDS = {"hysteresis_rad": ("torsion",), "backlash_rad": ("torsion",),
                 "accuracy_rad": ("transmission", "vibration")}
 # Shared nonlinear parameters: one value per model, whichever effect brings them.
 SHARED = ("damping_ratio", "stiffness_scale")
-# Legendre order of the slowly varying TE amplitude and phase while effects are named (3 and
-# 4 fit modulated TE better but a flexible TE also takes what a second effect explains);
-# once named, the order is chosen by BIC up to TE_ORDER_MAX (:func:`.refine.refine_te_order`)
-TE_ORDER = 2
-TE_ORDER_MAX = 24
-
-
-def te_labels(order: int) -> tuple[str, ...]:
-    """Names of the TE amplitudes: sin, cos, then sin_uk, cos_uk for P1 … P_order."""
-    return ("sin", "cos") + tuple(f"{f}_u{k}" for k in range(1, order + 1)
-                                  for f in ("sin", "cos"))
-
-
-TE_LABELS = te_labels(TE_ORDER)
-
-
 @dataclass
 class Problem:
     """One data set with its baseline and everything the effect columns need."""
@@ -104,6 +88,11 @@ class Problem:
     # (effects.backlash_twist): 0 while effects are named, fitted once backlash is
     # (refine.refine_play)
     play_hold: float = 0.0
+    # the member each harmonic's error turns with (k → δ: its angle k·(1 + δ)·φ, φ the WG
+    # angle): δ = 0 the fixed circular spline, else the output member's (frames.FRAMES);
+    # and a second member's share at constant amplitude (frames.refine_frames)
+    te_frames: dict[int, float] = field(default_factory=dict)
+    te_second_frames: dict[int, float] = field(default_factory=dict)
     cache: dict = field(default_factory=dict)
     _plane: preisach.PreisachPlane | None = field(default=None, repr=False)
 
@@ -211,52 +200,6 @@ def parameters_of(name: str, kind: str) -> tuple[fx.Parameter, ...]:
     return fx.nonlinear_parameters(name, kind)
 
 
-def _harmonic(problem: Problem, order: int, theta: dict, full: bool) -> np.ndarray:
-    """sin/cos of k·φ times the Legendre polynomials P0 … P_te_order of the record position
-    (a slowly varying amplitude and phase; :func:`te_basis`), or the linear joint's
-    response to them (vibration)."""
-    zeta = theta.get("damping_ratio")
-    scale = theta.get("stiffness_scale", 1.0)
-    key = (order, zeta, scale, full)
-    width = 2 * (problem.te_order + 1)
-    # a lower Legendre order's columns are the first of a higher one's: kept once, sliced
-    if key not in problem.cache or problem.cache[key].shape[1] < width:
-        inp = problem.base.inputs
-        cols = np.column_stack(te_basis(problem, order))
-        if zeta is not None:  # the joint's response needs the whole time history
-            k = float(inp["K_Nm_per_rad"]) * scale
-            cols = joint.joint_response(inp["time_s"], cols, k, float(inp["J_kgm2"]), zeta)
-        cols = cols if full else cols[problem.rows]
-        if len(problem.cache) > 64:
-            problem.cache.clear()
-        problem.cache[key] = cols
-    return problem.cache[key][:, :width]
-
-
-def overtones_of(problem: Problem, effects: tuple[str, ...], name: str) -> list[int]:
-    """The chosen overtones that belong to the named error ``name``: to te_2x those it
-    divides, to te_1x the rest."""
-    mine = [k for k in problem.te_overtones if k % 2 == 0 and "te_2x" in effects]
-    return mine if name == "te_2x" else [k for k in problem.te_overtones if k not in mine]
-
-
-def te_basis(problem: Problem, order: int) -> list[np.ndarray]:
-    """The error's columns on every row: sin/cos of k·φ times P0 … P_te_order of the record
-    position (a slowly varying amplitude and phase), labelled as :func:`te_labels`."""
-    inp = problem.base.inputs
-    phi = inp["wg_angle_rad"]
-    return [c * p for p in _legendre(inp["record_position"], problem.te_order)
-            for c in (np.sin(order * phi), np.cos(order * phi))]
-
-
-def _legendre(u: np.ndarray, order: int) -> list[np.ndarray]:
-    """P0 … P_order of u ∈ [−1, 1] (Bonnet's recursion)."""
-    out = [np.ones_like(u), u]
-    for n in range(1, order):
-        out.append(((2 * n + 1) * u * out[n] - n * out[n - 1]) / (n + 1))
-    return out[:order + 1]
-
-
 def columns(problem: Problem, effects: tuple[str, ...], theta: dict[str, float],
             full: bool = False):
     """Design matrix, labels and linear bounds for a model with ``effects``, on every row
@@ -308,10 +251,10 @@ def columns(problem: Problem, effects: tuple[str, ...], theta: dict[str, float],
             add(name, ["compliance"], fx.progressive_twist(inp["torque_Nm"],
                                                            problem.housing_knee), 0.0)
         elif name in ("te_1x", "te_2x"):
-            block = _harmonic(problem, int(name[3]), theta, full)
-            add(name, te_labels(problem.te_order)[:block.shape[1]], block)
+            block = harmonic(problem, int(name[3]), theta, full)
+            add(name, te_column_labels(problem, int(name[3])), block)
             for k in overtones_of(problem, effects, name):
-                add(name, [f"sin_{k}x", f"cos_{k}x"], _harmonic(problem, k, theta, full)[:, :2])
+                add(name, [f"sin_{k}x", f"cos_{k}x"], harmonic(problem, k, theta, full)[:, :2])
         elif name == "low_load_efficiency":
             f = fx.low_load_factor(inp["alpha"], th["c"], th["q"], inp["input_speed_rpm"],
                                    th["s"], _viscosity(problem, effects, theta, inp),

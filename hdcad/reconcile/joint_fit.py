@@ -12,7 +12,8 @@ from scipy.optimize import least_squares
 
 from . import joint
 from .baseline import STIFFNESS_SPREAD
-from .fitting import TE_ORDER_MAX, Fit, Problem, columns, finish, nonlinear, te_basis
+from .fitting import Fit, Problem, columns, finish, nonlinear
+from .harmonics import TE_ORDER_MAX, te_basis, te_width
 from .gates import bic_best, effective_n
 
 # relative step of the finite differences in ln ζ and the stiffness scale
@@ -74,11 +75,12 @@ def _curve_order(problem: Problem, model: "_CurveModel", x: np.ndarray) -> Fit:
     U = model.basis()
     tangent = model.tangents(x, U)[problem.rows]
     r = model.residual(x)
-    per_effect = U.shape[1] // len(model.te)
-    width = lambda o: 2 * (o + 1)
+    starts = _block_starts(problem, model.te)
     fits = {}
     for order in range(base_order, TE_ORDER_MAX + 1):
-        keep = [k * per_effect + j for k in range(len(model.te)) for j in range(width(order))]
+        problem.te_order = order
+        widths = [te_width(problem, int(e[3])) for e in model.te]
+        keep = [s + j for s, w in zip(starts, widths) for j in range(w)]
         D = np.column_stack([tangent[:, keep], model.X_add[problem.rows]])
         delta = np.linalg.lstsq(D, r, rcond=None)[0]
         rr = r - D @ delta
@@ -92,6 +94,12 @@ def _curve_order(problem: Problem, model: "_CurveModel", x: np.ndarray) -> Fit:
     start = wider.widen(x, model, base_order)
     result = wider.solve(start)
     return wider.fit_at(result.x)
+
+
+def _block_starts(problem: Problem, te: list[str]) -> list[int]:
+    """First column of each named error's block in the basis at the problem's order."""
+    widths = [te_width(problem, int(e[3])) for e in te]
+    return [int(v) for v in np.cumsum([0] + widths[:-1])]
 
 
 class _CurveModel:
@@ -137,11 +145,14 @@ class _CurveModel:
     def widen(self, x, narrow: "_CurveModel", order: int) -> np.ndarray:
         """``narrow``'s solution ``x`` (error at ``order``) as a start of this model."""
         a, b, zeta, scale = narrow._split(x)
-        per_narrow = len(a) // len(narrow.te)
-        per = len(self.te_index) // len(self.te)
+        saved = self.problem.te_order
+        self.problem.te_order = order
+        narrow_starts = _block_starts(self.problem, self.te)
+        widths = [te_width(self.problem, int(e[3])) for e in self.te]
+        self.problem.te_order = saved
         wide = np.zeros(len(self.te_index))
-        for k in range(len(self.te)):
-            wide[k * per:k * per + per_narrow] = a[k * per_narrow:(k + 1) * per_narrow]
+        for s, s_narrow, w in zip(_block_starts(self.problem, self.te), narrow_starts, widths):
+            wide[s:s + w] = a[s_narrow:s_narrow + w]
         return np.concatenate([wide, b, [math.log(zeta), scale]])
 
     def starts(self, fit: Fit) -> list[np.ndarray]:

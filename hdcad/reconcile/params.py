@@ -7,7 +7,8 @@ import math
 import numpy as np
 
 from . import effects as fx
-from .fitting import TE_LABELS, Fit, Problem, key_of, parameters_of
+from .fitting import Fit, Problem, key_of, parameters_of
+from .harmonics import TE_LABELS, frames_of, legendre
 from .rig import RIG_EFFECTS
 
 
@@ -37,9 +38,8 @@ def _te(b: dict[str, float], th: dict[str, float]) -> dict[str, tuple[float, str
     out = {"amplitude": (math.hypot(b["sin"], b["cos"]), "rad"),
            "phase": (math.atan2(b["cos"], b["sin"]), "rad")}
     if "sin_u1" in b:  # slowly varying amplitude: the largest over the record
-        from .fitting import _legendre
         u = np.linspace(-1, 1, 201)
-        polys = _legendre(u, sum(1 for k in b if k.startswith("sin_u")))
+        polys = legendre(u, sum(1 for k in b if k.startswith("sin_u")))
         s = b["sin"] + sum(b[f"sin_u{k}"] * polys[k] for k in range(1, len(polys)))
         c = b["cos"] + sum(b[f"cos_u{k}"] * polys[k] for k in range(1, len(polys)))
         out["amplitude_max"] = (float(np.max(np.hypot(s, c))), "rad")
@@ -50,6 +50,19 @@ def _te(b: dict[str, float], th: dict[str, float]) -> dict[str, tuple[float, str
     for shared in ("damping_ratio", "stiffness_scale"):
         if shared in th:
             out[shared] = (th[shared], "-")
+    return out
+
+
+def _frames(problem: Problem, b: dict[str, float], order: int) -> dict[str, tuple[float, str]]:
+    """The error's cycles per WG revolution, k·(1 + δ) in its frame δ, and the share of a
+    second frame when there is one (``Problem.te_frames``)."""
+    frame, second = frames_of(problem, order)
+    if not (frame or second is not None):
+        return {}
+    out = {"cycles_per_wg_revolution": (order * (1 + frame), "-")}
+    if second is not None:
+        out["second_frame_cycles_per_wg_revolution"] = (order * (1 + second), "-")
+        out["second_frame_amplitude"] = (math.hypot(b["sin_second"], b["cos_second"]), "rad")
     return out
 
 
@@ -99,7 +112,7 @@ def effect_params(problem: Problem, fit: Fit, effect: str) -> dict[str, dict]:
             u = float(fx.progressive_twist(np.array(problem.scales["T0"]), knee)) / knee
             out.update({"T_k": (knee, "N·m"), "K_h_at_T0": ((1 + 3 * u * u) / c, "N·m/rad")})
     elif effect in ("te_1x", "te_2x"):
-        out = _te(b, fit.theta)
+        out = {**_te(b, fit.theta), **_frames(problem, b, int(effect[3]))}
     elif effect == "low_load_efficiency":
         out = {"c": (th["c"], "-"), "q": (th["q"], "-"), "s": (th["s"], "-"),
                "Ke_at_alpha_0.58_1000rpm": (

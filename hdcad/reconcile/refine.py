@@ -16,8 +16,10 @@ from dataclasses import replace
 from scipy.optimize import minimize_scalar
 
 from . import effects as fx
-from .fitting import TE_ORDER_MAX, Fit, Problem, finish, fit_model, nonlinear
+from .fitting import Fit, Problem, finish, fit_model, nonlinear
+from .frames import refine_frames
 from .gates import BIC_MIN, bic_best, bic_gain, effective_n
+from .harmonics import TE_ORDER_MAX
 from .joint_fit import refine_spring
 from .loops import refine_hysteresis, refine_preisach
 
@@ -95,10 +97,11 @@ def refine_te_overtones(problem: Problem, fit: Fit) -> Fit:
 
 
 def refine(problem: Problem, fit: Fit) -> Fit:
-    """The named model's final form: the joint on the catalog curve where the twist leaves
-    its first segment (vibration); else the TE's overtones and modulation order, the
-    viscosity law, the loop's Bouc–Wen form, a play held by friction, then a Preisach relay
-    sum in place of the Bouc–Wen loop where BIC prefers it."""
+    """The named model's final form: the named errors' frames, then the joint on the catalog
+    curve where the twist leaves its first segment (vibration); else the TE's overtones and
+    modulation order, the viscosity law, the loop's Bouc–Wen form, a play held by friction,
+    then a Preisach relay sum in place of the Bouc–Wen loop where BIC prefers it."""
+    fit = refine_frames(problem, fit)
     curved = refine_spring(problem, fit)
     if curved is fit:
         fit = refine_hysteresis(problem, refine_viscosity(

@@ -13,7 +13,8 @@ import math
 
 import numpy as np
 
-from .fitting import Problem, _harmonic
+from .fitting import Problem
+from .harmonics import harmonic
 
 # Significance of a region or a harmonic: z-score against the noise, and a floor relative
 # to the noise so that negligible structure is not reported.
@@ -96,7 +97,8 @@ def harmonics(problem, residual, sigma, tau, theta=None):
     rows = problem.rows
     n_eff = max(len(rows) / tau, 3.0)
     for k in HARMONIC_ORDERS:
-        X = np.column_stack([np.ones(len(rows)), _harmonic(problem, k, theta or {}, full=False)[:, :2]])
+        X = np.column_stack([np.ones(len(rows)), harmonic(problem, k, theta or {}, full=False,
+                                                           fixed_frame=True)[:, :2]])
         beta = np.linalg.lstsq(X, residual[rows], rcond=None)[0]
         part = X[:, 1:] @ beta[1:]
         rms = float(np.sqrt(np.mean(part ** 2)))

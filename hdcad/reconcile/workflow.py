@@ -26,7 +26,7 @@ from scipy.ndimage import median_filter
 from ..catalog import Catalog
 from ..models import GearModel
 from . import baseline as baselines
-from . import readings, refine
+from . import frames, readings, refine
 from . import regions as rg
 from . import search
 from . import units
@@ -150,6 +150,7 @@ def reconcile(kind: str, data: dict, model: GearModel, catalog: Catalog,
     base, fixes = _baseline(kind, data, model, catalog, load_inertia_kgm2)
     problem = make_problem(kind, base)
     start = _start(problem)
+    frames.choose_frames(problem, start)
     with_rig, rig_table, singles = search.select_rig(problem, start)
     best, candidates = search.select_gear(problem, with_rig, singles)
     final = search.recheck_rig(problem, best.fit if best else with_rig)

@@ -1,0 +1,107 @@
+"""The transmission error's columns: sin/cos of its angle at k cycles per wave-generator
+revolution, in the frame of the member that carries it, times Legendre polynomials of the
+record position (a slowly varying amplitude and phase), and the load joint's response to
+them in a run-up.
+
+References
+----------
+Seed 000 p.021 (angular transmission error, two cycles per input revolution; the load
+resonance it excites, formula 021-3); seed 000 p.010 (rotation directions and ratios).
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from . import joint
+
+if TYPE_CHECKING:
+    from .fitting import Problem
+
+# Legendre order of the slowly varying TE amplitude and phase while effects are named (3 and
+# 4 fit modulated TE better but a flexible TE also takes what a second effect explains);
+# once named, the order is chosen by BIC up to TE_ORDER_MAX (:func:`.refine.refine_te_order`)
+TE_ORDER = 2
+TE_ORDER_MAX = 24
+
+
+def te_labels(order: int) -> tuple[str, ...]:
+    """Names of the TE amplitudes: sin, cos, then sin_uk, cos_uk for P1 … P_order."""
+    return ("sin", "cos") + tuple(f"{f}_u{k}" for k in range(1, order + 1)
+                                  for f in ("sin", "cos"))
+
+
+TE_LABELS = te_labels(TE_ORDER)
+
+
+def harmonic(problem: Problem, order: int, theta: dict, full: bool,
+             fixed_frame: bool = False) -> np.ndarray:
+    """The error's columns at ``order`` on the fitted rows or every row (``full``):
+    :func:`te_basis`, or the linear joint's response to them (vibration, when ``theta``
+    holds the damping); ``fixed_frame``: at k·φ whatever the error's frame."""
+    zeta = theta.get("damping_ratio")
+    scale = theta.get("stiffness_scale", 1.0)
+    frames = (0.0, None) if fixed_frame else frames_of(problem, order)
+    key = (order, frames, zeta, scale, full)
+    width = te_width(problem, order) if not fixed_frame else 2 * (problem.te_order + 1)
+    # a lower Legendre order's columns are the first of a higher one's: kept once, sliced
+    if key not in problem.cache or problem.cache[key].shape[1] < width:
+        inp = problem.base.inputs
+        cols = np.column_stack(te_basis(problem, order, frames))
+        if zeta is not None:  # the joint's response needs the whole time history
+            k = float(inp["K_Nm_per_rad"]) * scale
+            cols = joint.joint_response(inp["time_s"], cols, k, float(inp["J_kgm2"]), zeta)
+        cols = cols if full else cols[problem.rows]
+        if len(problem.cache) > 64:
+            problem.cache.clear()
+        problem.cache[key] = cols
+    return problem.cache[key][:, :width]
+
+
+def overtones_of(problem: Problem, effects: tuple[str, ...], name: str) -> list[int]:
+    """The chosen overtones that belong to the named error ``name``: to te_2x those it
+    divides, to te_1x the rest."""
+    mine = [k for k in problem.te_overtones if k % 2 == 0 and "te_2x" in effects]
+    return mine if name == "te_2x" else [k for k in problem.te_overtones if k not in mine]
+
+
+def frames_of(problem: Problem, order: int) -> tuple[float, float | None]:
+    """(frame, second frame or None) of the error at ``order`` (``Problem.te_frames``)."""
+    return problem.te_frames.get(order, 0.0), problem.te_second_frames.get(order)
+
+
+def te_width(problem: Problem, order: int) -> int:
+    """Columns of the error at ``order``: :func:`te_basis`'s at the problem's order."""
+    return 2 * (problem.te_order + 1) + 2 * (frames_of(problem, order)[1] is not None)
+
+
+def te_basis(problem: Problem, order: int,
+             frames: tuple[float, float | None] | None = None) -> list[np.ndarray]:
+    """The error's columns on every row: sin/cos of its angle k·(1 + δ)·φ in its frame δ
+    (``Problem.te_frames``) times P0 … P_te_order of the record position (a slowly varying
+    amplitude and phase), after the sin/cos of a second frame's share when there is one;
+    labelled as :func:`te_column_labels`."""
+    inp = problem.base.inputs
+    frame, second = frames_of(problem, order) if frames is None else frames
+    phi = inp["wg_angle_rad"]
+    a = order * (1 + frame) * phi
+    own = ([np.sin(order * (1 + second) * phi), np.cos(order * (1 + second) * phi)]
+           if second is not None else [])
+    return own + [c * p for p in legendre(inp["record_position"], problem.te_order)
+                  for c in (np.sin(a), np.cos(a))]
+
+
+def te_column_labels(problem: Problem, order: int) -> tuple[str, ...]:
+    """Names of :func:`te_basis`'s columns."""
+    own = ("sin_second", "cos_second") if frames_of(problem, order)[1] is not None else ()
+    return own + te_labels(problem.te_order)
+
+
+def legendre(u: np.ndarray, order: int) -> list[np.ndarray]:
+    """P0 … P_order of u ∈ [−1, 1] (Bonnet's recursion)."""
+    out = [np.ones_like(u), u]
+    for n in range(1, order):
+        out.append(((2 * n + 1) * u * out[n] - n * out[n - 1]) / (n + 1))
+    return out[:order + 1]
