@@ -263,6 +263,7 @@ def scaled_example(tmp_path, column: str, factor: float):
     ("twist_rad", 60 * 180 / math.pi, "arc-minutes instead of radians"),
     ("twist_rad", 3600 * 180 / math.pi, "arc-seconds instead of radians"),
     ("torque_Nm", 1e-3, "kN·m"),
+    ("torque_Nm", 1 / 9.80665, "kgf·m"),
 ])
 def test_data_in_wrong_units_are_converted_and_named_as_the_rig(tmp_path, capsys, column,
                                                                 factor, words):
@@ -280,7 +281,9 @@ def test_data_in_wrong_units_are_converted_and_named_as_the_rig(tmp_path, capsys
 
 
 def test_implausible_scale_without_a_unit_reading_is_bad_input(tmp_path, capsys):
-    path = scaled_example(tmp_path, "twist_rad", 12.0)
+    """24× the catalog twist lies between the kgf·m reading's window (9.81 within a factor
+    2) and the degrees' (57.3 within 2): no usual unit mistake explains it."""
+    path = scaled_example(tmp_path, "twist_rad", 24.0)
     code = main(["reconcile", "torsion", str(path), "--model", "CSF-32-100-GH"])
     err = capsys.readouterr().err
     assert code == 2 and "twist_rad" in err and err.count("\n") == 1
@@ -323,4 +326,16 @@ def test_an_output_angle_in_arc_seconds_is_converted():
     (fix,) = result["measurement_effects"]
     assert fix["column"] == "output_angle_rad" and "arc-seconds" in fix["reading"]
     assert fix["factor"] == pytest.approx(math.pi / (180 * 3600), rel=1e-12)
+    assert result["missing_effects"] == []
+
+
+def test_an_input_angle_in_revolutions_is_converted():
+    """Suite K's transmission record with the input angle in revolutions was refused as bad
+    input at its held-out score (the output turned 6.28 × input / ratio)."""
+    from truth_runs import bench, named_case
+    case = named_case("k", "k-transmission-decoy_separable-none-input-in-revolutions-000", 11)
+    result = bench.reconcile_case(case)
+    (fix,) = result["measurement_effects"]
+    assert fix["column"] == "input_angle_rad" and "revolutions" in fix["reading"]
+    assert fix["factor"] == pytest.approx(2 * math.pi, rel=1e-12)
     assert result["missing_effects"] == []

@@ -1,9 +1,11 @@
 """Measurement-chain effects found in the data (:mod:`hdcad.reconcile.rig`): a twist
-encoder's interpolation error, a ripple periodic in the measured angle.
+encoder's interpolation error, a ripple periodic in the measured angle; a sensor turning in
+the play of its anti-rotation slot, a step at each reversal of the twist.
 
-The reconcile cases come from suite H (``truths/truth_h.py``, written by a helper from the
-contract only): its twist encoder of 9 000 – 36 000 lines reads the twist with an error
-periodic in the measured angle, a decoy that must not be named as a gear effect.
+The reconcile cases come from suites H and K (``truths/truth_h.py``, ``truth_k.py``, each
+written by a helper from the contract only): H's twist encoder of 9 000 – 36 000 lines reads
+the twist with an error periodic in the measured angle, K's encoder stator steps across its
+slot's play, decoys that must not be named as gear effects.
 """
 
 from __future__ import annotations
@@ -80,3 +82,42 @@ def test_a_housing_spring_under_quantised_noise_is_not_read_as_an_encoder_ripple
     result = bench.reconcile_case(case)
     assert result["missing_effects"] == ["housing_compliance"]
     assert "encoder_interpolation" not in [m["effect"] for m in result["measurement_effects"]]
+
+
+@pytest.mark.parametrize("name", ["k-torsion-decoy_separable-none-encoder-stator-slot-play-000",
+                                  "k-torsion-decoy_separable-none-encoder-stator-slot-play-001"])
+def test_a_sensor_turning_in_its_slot_s_play_is_the_rig_s(name):
+    """Suite K's encoder stator in the play of its anti-rotation slot (seed 11, 2 per cell,
+    written from the contract only): the reading steps at each reversal of the twist, at
+    the torque's extremes. At K's held-out score both were named hysteresis; they are read
+    as the sensor's play, its half-step within 10 % of the suite's (a square wave of RMS
+    snr × noise), and no gear effect."""
+    case = named_case("k", name, 11)
+    result = bench.reconcile_case(case)
+    assert result["missing_effects"] == []
+    (play,) = [m for m in result["measurement_effects"] if m["effect"] == "sensor_play"]
+    assert abs(play["params"]["p"]["value"]) == pytest.approx(case.snr * case.noise_rms,
+                                                              rel=0.1)
+
+
+def test_a_gear_loop_is_not_read_as_a_sensor_s_play():
+    """Suite K's Iwan loop (a power-law density of slip strengths) is named hysteresis and
+    no play of the sensor is read beside it."""
+    case = named_case("k", "k-torsion-single-hysteresis-iwan-powerlaw-000", 11)
+    result = bench.reconcile_case(case)
+    assert result["missing_effects"] == ["hysteresis"]
+    assert not [m for m in result["measurement_effects"] if m["effect"] == "sensor_play"]
+
+
+def test_a_play_keeps_the_branches_apart_at_the_tips_and_a_masing_loop_does_not():
+    """Over two triangle cycles: a reading that steps by ±p at each reversal, and a
+    Masing loop (branches 2·f((T − T_r)/2) from each reversal, f the Ramberg–Osgood
+    backbone's slip part), which closes at its tips."""
+    torque = np.interp(np.linspace(0, 5, 2001), [0, 1, 2, 3, 4, 5], [0, 1, -1, 1, -1, 0])
+    direction = np.where(np.gradient(torque) >= 0, 1.0, -1.0)
+    assert rig.apart_at_the_tips(1e-4 * direction, torque, direction)
+    slip = lambda t: 1e-4 * t * np.abs(t) ** 2  # the backbone's slip twist at torque t
+    reversal = np.where(direction > 0, -1.0, 1.0)  # the previous extreme of each branch
+    masing = 2 * slip((torque - reversal) / 2) + slip(reversal)
+    masing[torque.argmax() > np.arange(torque.size)] = slip(torque[:torque.argmax()])
+    assert not rig.apart_at_the_tips(masing - slip(torque), torque, direction)

@@ -164,6 +164,8 @@ def make_problem(kind: str, base: baselines.Baseline) -> Problem:
     if kind == "vibration":  # the response to a steady error names the effects
         problem.te_order = 0
     problem.branches = branches
+    if branches is not None:  # the sign of each row's branch (a reading's play steps with it)
+        base.inputs["branch_direction"] = fx.branch_direction(n, branches)
     set_rows(problem, rows)
     return problem
 

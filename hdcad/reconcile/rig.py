@@ -83,6 +83,16 @@ RIG_EFFECTS: dict[str, Effect] = {e.name: e for e in (
                               "angle_period", start=1.0)),
         kinds=("torsion",)),
     Effect(
+        name="sensor_play",
+        description=("The twist sensor's body turns in the play of its anti-rotation slot "
+                     "(or of a measuring arm's coupling): the reading steps by the play each "
+                     "time the twist changes direction, at the torque's extremes, at "
+                     "constant torque, which no friction or play of the gear does (those "
+                     "act while the torque changes, a play at zero torque)."),
+        form="y += p·s, s = +1 on loading branches and −1 on unloading ones",
+        parameters=(_linear("p", "rad", "half the step at each reversal"),),
+        kinds=("torsion",)),
+    Effect(
         name="sensor_gain",
         description=("The output angle sensor's scale is off: the measured angle grows by "
                      "(1 + g) times the true one. The ratio is exact (tooth counts), so a "
@@ -113,12 +123,35 @@ def columns(name: str, inputs: dict[str, np.ndarray], step_position: float,
         return ["a", "b"], np.column_stack([np.sin(out), np.cos(out)])
     if name == "sensor_gain":
         return ["g"], inputs["output_angle_rad"]
+    if name == "sensor_play":
+        return ["p"], inputs["branch_direction"]
     if name == "encoder_interpolation":
         phase = 2.0 * np.pi * inputs["measured_rad"] / theta["period"]
         orders = range(1, INTERPOLATION_HARMONICS + 1)
         return ([f"{ab}{k}" for k in orders for ab in "ab"],
                 np.column_stack([f(k * phase) for k in orders for f in (np.sin, np.cos)]))
     raise KeyError(name)
+
+
+# A reading's play steps at the torque's extremes: the branches stay apart there by as much
+# as at zero torque, where a loop of the gear (friction, microslip, Masing branches) closes
+# at its tips. The residual's branch separation among the rows beyond TIP_SHARE of the
+# largest torque must be at least TIP_RATIO_MIN of that below MID_SHARE.
+TIP_SHARE, MID_SHARE, TIP_RATIO_MIN = 0.8, 0.3, 0.5
+
+
+def apart_at_the_tips(residual: np.ndarray, torque: np.ndarray,
+                      direction: np.ndarray) -> bool:
+    """Whether the loading and unloading branches of ``residual`` [rad] stay apart at the
+    torque's extremes (a reading's play) rather than meet there (a loop of the gear);
+    ``direction`` is +1 on loading rows and −1 on unloading ones."""
+    share = np.abs(torque) / np.max(np.abs(torque))
+    tip, mid = share >= TIP_SHARE, share <= MID_SHARE
+    if not (tip.any() and mid.any()):
+        return False
+    at_mid = float(np.mean(residual[mid] * direction[mid]))
+    at_tip = float(np.mean(residual[tip] * direction[tip]))
+    return at_mid != 0.0 and at_tip / at_mid >= TIP_RATIO_MIN
 
 
 # Periods an encoder's interpolation error is looked for at: at least PERIODS_MIN of them

@@ -92,11 +92,16 @@ def select_rig(problem: Problem, start: Fit) -> tuple[Fit, list[dict], dict[str,
 
 def _rig_signature(problem: Problem, name: str, without: Fit, fit: Fit) -> bool:
     """A measurement effect's own signature, beyond a better fit: an encoder's
-    interpolation ripple is the same over the whole span of the angle."""
+    interpolation ripple is the same over the whole span of the angle; a reading's play
+    keeps the branches apart at the torque's extremes, where a loop of the gear closes."""
+    inputs, rows = problem.base.inputs, problem.rows
+    if name == "sensor_play":
+        return rig.apart_at_the_tips(without.residual(problem), inputs["torque_Nm"][rows],
+                                     inputs["branch_direction"][rows])
     if name != "encoder_interpolation":
         return True
     return rig.ripple_everywhere(without.residual(problem), fit.residual(problem),
-                                 problem.base.inputs["measured_rad"][problem.rows])
+                                 inputs["measured_rad"][rows])
 
 
 def select_gear(problem: Problem, start: Fit, singles: dict[str, Fit] | None = None

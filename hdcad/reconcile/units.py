@@ -1,8 +1,8 @@
 """Channels in the wrong unit: found before any fit, corrected and reported as a rig finding.
 
 A channel recorded in the wrong unit (degrees, arc-minutes or arc-seconds for radians, kN·m
-for N·m, efficiency as a fraction) scales the data by 57.3, 3438, 206265, 1000 or 0.01
-against the catalog: no physical effect does that. The catalog's stiffness is an average
+or kgf·m for N·m, an input angle in revolutions, efficiency as a fraction) scales the data by
+57.3, 3438, 206265, 1000, 9.81, 6.28 or 0.01 against the catalog: no physical effect does that. The catalog's stiffness is an average
 (seed 000 p.020) and real gears scatter by tens of percent, hysteresis and play add to the
 twist at small torque, so only a factor beyond
 ``IMPLAUSIBLE`` (5) is taken as a unit error. When the factor is one of the usual unit
@@ -63,10 +63,16 @@ def _angle_fixes(column: str, what: str) -> tuple:
 
 
 # (column, factor applied, reading, the scale it explains) per kind
+# the catalog's other torque unit: kgf·m (seed 003's rating and stiffness tables print it
+# beside N·m; 1 kgf·m = 9.80665 N·m, ISO 80000-4 standard gravity)
+KGF_M = 9.80665
 TORSION_FIXES = _angle_fixes("twist_rad", "twist") + (
     ("torque_Nm", 1000.0, "torque in kN·m instead of N·m", 1000.0),
+    ("torque_Nm", KGF_M, "torque in kgf·m instead of N·m", KGF_M),
     ("twist_rad", 1e-3, "twist in mrad instead of rad", 1000.0))
-TRANSMISSION_FIXES = _angle_fixes("output_angle_rad", "output angle")
+TRANSMISSION_FIXES = _angle_fixes("output_angle_rad", "output angle") + (
+    ("input_angle_rad", 2 * math.pi, "input angle in revolutions instead of radians",
+     2 * math.pi),)
 
 
 def _rms(values: np.ndarray) -> float:
