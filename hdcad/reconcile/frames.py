@@ -20,7 +20,7 @@ error of both splines) is kept on the same terms, two amplitudes more.
 from __future__ import annotations
 
 from . import effects as fx
-from .fitting import Fit, Problem, finish, fit_model, nonlinear
+from .fitting import Fit, Problem, fit_model
 from .gates import BIC_MIN, bic_gain, effective_n
 from .noise import noise_rms
 
@@ -57,30 +57,12 @@ def choose_frames(problem: Problem, start: Fit) -> None:
     if problem.kind != "vibration":
         return
     for name, k in _orders(fx.applicable(problem.kind)):
-        effects = start.effects + (name,)
-        problem.te_frames[k] = 0.0
-        fixed = fit_model(problem, effects, start.theta)
-        best, fit = _best_frame(problem, k, fixed, 0.0, problem.te_frames)
-        problem.te_frames[k] = best if fit and _beyond(problem, fixed, fit) else 0.0
-
-
-def _best_frame(problem: Problem, k: int, fit: Fit, skip: float | None,
-                frames_of_k: dict[int, float]) -> tuple[float, Fit | None]:
-    """The frame (other than ``skip``) whose error at ``fit``'s damping and stiffness fits
-    best (amplitudes only), fitted in full from there when it fits better than ``fit``
-    already (else None: fitting the joint again is what costs); ``frames_of_k`` is the
-    problem's dict that sets it (``te_frames`` or ``te_second_frames``), left at it."""
-    shapes = len(nonlinear(problem.kind, fit.effects))
-    trials = {}
-    for s in frames(problem.base.figures["ratio"][0]):
-        if s != skip:
-            frames_of_k[k] = s
-            trials[s] = finish(problem, fit.effects, fit.theta, shapes)
-    best = min(trials, key=lambda s: trials[s].rss)
-    frames_of_k[k] = best
-    if trials[best].rss >= fit.rss:
-        return best, None
-    return best, fit_model(problem, fit.effects, fit.theta)
+        fits = {}
+        for s in frames(problem.base.figures["ratio"][0]):
+            problem.te_frames[k] = s
+            fits[s] = fit_model(problem, start.effects + (name,), start.theta)
+        best = min(fits, key=lambda s: fits[s].rss)
+        problem.te_frames[k] = best if _beyond(problem, fits[0.0], fits[best]) else 0.0
 
 
 def _beyond(problem: Problem, *alternatives: Fit) -> bool:
@@ -113,10 +95,14 @@ def refine_frames(problem: Problem, fit: Fit) -> Fit:
             problem.notes.append(
                 f"{name}: an error turning with the output member fits the run-up better, "
                 f"at {k * (1 + problem.te_frames[k]):.4f} cycles per WG revolution")
-        s, trial = _best_frame(problem, k, fit, problem.te_frames.get(k, 0.0),
-                               problem.te_second_frames)
-        if trial and _beyond(problem, fit, modulated, trial):
-            fit = trial
+        trials = {}
+        for s in frames(problem.base.figures["ratio"][0]):
+            if s != problem.te_frames.get(k, 0.0):
+                problem.te_second_frames[k] = s
+                trials[s] = fit_model(problem, fit.effects, fit.theta)
+        s = min(trials, key=lambda q: trials[q].rss)
+        if _beyond(problem, fit, modulated, trials[s]):
+            problem.te_second_frames[k], fit = s, trials[s]
             problem.notes.append(f"{name}: a share turning at {k * (1 + s):.4f} cycles "
                                  "per WG revolution kept beside it (BIC)")
         else:
