@@ -89,7 +89,7 @@ class Problem:
     # (refine.refine_play)
     play_hold: float = 0.0
     # the member each harmonic's error turns with (k → δ: its angle k·(1 + δ)·φ, φ the WG
-    # angle): δ = 0 the fixed circular spline, else the output member's (frames.FRAMES);
+    # angle): δ = 0 the fixed circular spline, else the output member's (frames.frames);
     # and a second member's share at constant amplitude (frames.refine_frames)
     te_frames: dict[int, float] = field(default_factory=dict)
     te_second_frames: dict[int, float] = field(default_factory=dict)
