@@ -1,6 +1,7 @@
 """Measurement-chain effects found in the data (:mod:`hdcad.reconcile.rig`): a twist
 encoder's interpolation error, a ripple periodic in the measured angle; a sensor turning in
-the play of its anti-rotation slot, a step at each reversal of the twist.
+the play of its anti-rotation slot, a step at each reversal of the twist; a torque channel's
+gain, which moves the catalog curve's corners.
 
 The reconcile cases come from suites H and K (``truths/truth_h.py``, ``truth_k.py``, each
 written by a helper from the contract only): H's twist encoder of 9 000 – 36 000 lines reads
@@ -121,3 +122,72 @@ def test_a_play_keeps_the_branches_apart_at_the_tips_and_a_masing_loop_does_not(
     masing = 2 * slip((torque - reversal) / 2) + slip(reversal)
     masing[torque.argmax() > np.arange(torque.size)] = slip(torque[:torque.argmax()])
     assert not rig.apart_at_the_tips(masing - slip(torque), torque, direction)
+
+
+# CSF-32-100-GH's row of table 052-1 (CSF-GH 32, R ≥ 80): the corners and the segments'
+# stiffness, written out here so that the curve below does not come from hdcad
+T1, T2, K1, K2, K3 = 29.0, 108.0, 67000.0, 110000.0, 120000.0
+
+
+def _three_segments(torque):
+    """The catalog's three-segment curve with sharp corners (seed 000 p.020)."""
+    t = np.abs(torque)
+    theta = np.where(t <= T1, t / K1, np.where(
+        t <= T2, T1 / K1 + (t - T1) / K2, T1 / K1 + (T2 - T1) / K2 + (t - T2) / K3))
+    return np.sign(torque) * theta
+
+
+def _reconciled_torsion(torque_reading, twist):
+    from hdcad.catalog import load_catalog
+    from hdcad.models import resolve
+    from hdcad.reconcile import reconcile
+    catalog = load_catalog()
+    return reconcile("torsion", {"torque_Nm": torque_reading, "twist_rad": twist},
+                     resolve("CSF-32-100-GH", catalog), catalog)
+
+
+def _triangle(T0=137.0, rows=1600):
+    knots = [0.0, T0, -T0, T0, -T0, 0.0]
+    return np.interp(np.linspace(0, 5, rows), np.arange(6), knots)
+
+
+@pytest.mark.parametrize("gain", [1.12, 0.90])
+def test_a_torque_channel_s_gain_is_read_from_the_corners(gain):
+    """The torque channel reads ``gain`` × the true torque (a wrong shunt or calibration
+    constant) under a three-segment curve with sharp corners, noise 3 µrad (the gain moves
+    the twist by 23–28 noise RMS): read as the rig's gain within 0.01 (the corners sit at
+    gain × T1 and gain × T2, 29 and 108 N·m, over a 137 N·m triangle of 1600 rows), no
+    gear effect. Before it was read as an encoder's ripple (12 %) at 1.21 σ."""
+    torque = _triangle()
+    twist = _three_segments(torque) + 3e-6 * np.random.default_rng(4).standard_normal(1600)
+    result = _reconciled_torsion(gain * torque, twist)
+    assert result.missing_effects == []
+    found = {m["effect"]: m["params"] for m in result.measurement_effects}
+    assert found["sensor_gain"]["torque_gain"]["value"] == pytest.approx(gain - 1, abs=0.01)
+    assert result.rmse_after <= 1.05 * 3e-6
+
+
+def test_a_twist_channel_s_gain_is_not_a_torque_gain():
+    """The twist read 17 % high scales every segment alike: no corner moves, so it is the
+    stiffness scale (outside the catalog's spread), which a torque gain fits only by moving
+    the corners (−5 %, 1.07 σ, before its signature was asked for)."""
+    torque = _triangle()
+    twist = 1.17 * _three_segments(torque) + 3e-6 * np.random.default_rng(4).standard_normal(1600)
+    result = _reconciled_torsion(torque, twist)
+    assert "sensor_gain" not in [m["effect"] for m in result.measurement_effects]
+    stiffness = {n["name"]: n for n in result.nuisances}["stiffness_scale"]
+    assert not stiffness["within_spread"]
+
+
+def test_suite_k_s_wrong_shunt_is_the_rig_s():
+    """Suite K's torque channel 13.8 % low (a wrong shunt resistor; written from the contract
+    only; seed 11), on CSG-45-80-GH with arctan-smoothed corners: named housing_compliance
+    at K's held-out score. Read as the rig's gain, no gear effect; the gain's signature is
+    only 1.9 noise RMS (the suite's snr), so its size is asked within 0.05 (−0.179 against
+    −0.138: the corner's smoothing trades with its place)."""
+    case = named_case("k", "k-torsion-decoy_separable-none-shunt-cal-gain-000", 11)
+    result = bench.reconcile_case(case)
+    assert result["missing_effects"] == []
+    found = {m["effect"]: m["params"] for m in result["measurement_effects"]}
+    assert found["sensor_gain"]["torque_gain"]["value"] == pytest.approx(
+        case.nuisance["torque_gain"] - 1, abs=0.05)

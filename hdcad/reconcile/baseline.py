@@ -67,24 +67,28 @@ class Baseline:
 
     def free_columns(self, theta: dict[str, float], rows=slice(None)) -> np.ndarray:
         """The free columns on ``rows`` with the nuisance shape ``theta`` (torsion: the catalog
-        curve with corner width ``catalog.corner_width``; the array is kept for the next
-        call, so it is read only)."""
+        curve with corner width ``catalog.corner_width``, read at the true torque when the
+        torque channel's gain ``sensor_gain.torque_gain`` is fitted; the array is kept for
+        the next call, so it is read only)."""
         if self.curve is None:
             return self.free[rows]
         torque = self.inputs["torque_Nm"]
         width = float(theta.get("catalog.corner_width", 0.0))
+        gain = float(theta.get(TORQUE_GAIN_KEY, 0.0))
         every = isinstance(rows, slice) and rows == slice(None)
-        key = (width, None if every else id(rows))
+        key = (width, gain, None if every else id(rows))
         kept = self._kept.get(key)  # the same torque and rows objects, not merely their ids
         if kept is None or kept[0] is not torque or not (every or kept[1] is rows):
             if len(self._kept) >= _WIDTHS_KEPT:
                 del self._kept[next(iter(self._kept))]
-            kept = (torque, rows, _torsion_columns(self.curve, torque[rows], width))
+            kept = (torque, rows, _torsion_columns(self.curve, torque[rows] / (1.0 + gain),
+                                                   width))
             self._kept[key] = kept
         return kept[2]
 
 
 _WIDTHS_KEPT = 8
+TORQUE_GAIN_KEY = "sensor_gain.torque_gain"
 
 
 def _curve(model: GearModel, kind: str) -> tuple[StiffnessCurve, str]:
@@ -226,7 +230,8 @@ def torsion(data: dict, model: GearModel, catalog: Catalog) -> Baseline:
                         float(np.max(np.abs(torque))), source)
     notes = _curve_notes(curve) + [
         f"catalog stiffness scatter: ±{STIFFNESS_SPREAD:.0%} assumed (seed 000 p.020 gives "
-        "average values and no spread); a torque- or angle-sensor gain reads the same"]
+        "average values and no spread); a twist sensor's gain reads the same (a torque "
+        "channel's gain moves the curve's corners and is looked for as the rig's)"]
     n = len(torque)
     free = _torsion_columns(curve, torque, 0.0)
     names, units = ("compliance_scale", "offset"), ("-", "rad")

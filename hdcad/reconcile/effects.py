@@ -30,6 +30,7 @@ J. Eng. Mech. 102(2): the hysteresis form below is their first-order (n = 1) mod
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 
@@ -100,11 +101,14 @@ def turning_points(x: np.ndarray, threshold: float) -> tuple[np.ndarray, int]:
     return np.asarray(start), first or 1
 
 
+@functools.lru_cache(maxsize=64)
 def _bouc_wen_table(rho: float, n: float) -> tuple[np.ndarray, np.ndarray]:
     """(G, w): G(w) = ∫₀^w dw'/f(w') of the normalised Bouc–Wen branch, increasing in w.
 
     f(w) = 1 − wⁿ for w ≥ 0 (towards saturation) and 1 + ρ·|w|ⁿ for w < 0. The positive side
-    is tabulated in s = −ln(1 − w), where the integrand e^(−s)/f stays finite (→ 1/n).
+    is tabulated in s = −ln(1 − w), where the integrand e^(−s)/f stays finite (→ 1/n). Kept
+    for the last shapes (a fit's steps in the loop's torque scale reuse the table; read
+    only).
     """
     w_neg = np.linspace(-1.0, 0.0, 401)
     g_neg = _cumtrapz(1.0 / (1.0 + rho * np.abs(w_neg[::-1]) ** n), w_neg[::-1])

@@ -16,13 +16,14 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
-from scipy.optimize import least_squares, lsq_linear
+from scipy.optimize import least_squares
 
 from . import baseline as baselines
 from . import effects as fx
 from . import preisach
+from .bounded import solve
 from . import rig
-from .harmonics import TE_ORDER, harmonic, overtones_of, te_column_labels
+from .harmonics import TE_ORDER, harmonic, overtones_of, te_column_labels, te_order_of
 
 # Above this many rows the fit uses this many rows drawn at random (fixed seed; time order
 # kept, torque turning points added) — even steps could alias an efficiency grid sweep;
@@ -63,6 +64,7 @@ class Problem:
     # friction in parallel with it (−z_sat·z): the reading a hysteresis + spring pair is
     # tested against
     hysteresis_series: bool = False
+    scale_free: bool = False  # the compliance scale beyond the catalog's spread
     # hysteresis as a friction torque in parallel with the gear's spring, its twist the torque
     # times the curve's local compliance (the loop narrows where the gear stiffens); the
     # constant-compliance form names the effect, this one is tried once it is named
@@ -98,7 +100,11 @@ class Problem:
 
     @property
     def y(self) -> np.ndarray:
-        return self.base.y[self.rows] - self.base.fixed[self.rows]
+        """The data less the catalog's fixed part on the fitted rows (kept: read only)."""
+        key = ("y", id(self.rows))
+        if key not in self.cache:
+            self.cache[key] = self.base.y[self.rows] - self.base.fixed[self.rows]
+        return self.cache[key]
 
     @property
     def preisach_plane(self) -> preisach.PreisachPlane:
@@ -198,7 +204,7 @@ def nonlinear(kind: str, effects: tuple[str, ...]) -> dict[str, fx.Parameter]:
 
 def parameters_of(name: str, kind: str) -> tuple[fx.Parameter, ...]:
     if name in rig.RIG_EFFECTS:
-        return rig.RIG_EFFECTS[name].nonlinear
+        return rig.nonlinear_parameters(name, kind)
     return fx.nonlinear_parameters(name, kind)
 
 
@@ -215,9 +221,11 @@ def columns(problem: Problem, effects: tuple[str, ...], theta: dict[str, float],
     cols = [free]
     labels = [("baseline", n_) for n_ in base.free_names]
     # the compliance scale stays within the catalog's spread: beyond it the data ask for an
-    # effect (or, for a stiffer gear, the nuisance report says so)
+    # effect (or, for a stiffer gear, the nuisance report says so); left free only to ask
+    # whether something else than the scale is in the data
     spread = baselines.STIFFNESS_SPREAD
-    bounds = {"compliance_scale": (1 / (1 + spread), 1 / (1 - spread)),
+    scale = (0.0, np.inf) if problem.scale_free else (1 / (1 + spread), 1 / (1 - spread))
+    bounds = {"compliance_scale": scale,
               "printed_reading": (0.0, 1 / (1 - spread)),
               "scale_error": (-baselines.ANGLE_GAIN_LIMIT, baselines.ANGLE_GAIN_LIMIT)}
     lower = [bounds.get(n_, (-np.inf, np.inf))[0] for n_ in base.free_names]
@@ -246,15 +254,15 @@ def columns(problem: Problem, effects: tuple[str, ...], theta: dict[str, float],
         elif name == "backlash":
             torque = inp["torque_Nm"]
             if problem.play_hold:
-                torque = torque - fx.branch_direction(len(torque), branches) * (
+                torque = torque - inp["branch_direction"] * (
                     problem.play_hold * problem.scales["T0"])
             add(name, ["lost_motion"], fx.backlash_twist(torque, 1.0, th["T_w"]), 0.0)
         elif name == "housing_compliance":
             add(name, ["compliance"], fx.progressive_twist(inp["torque_Nm"],
                                                            problem.housing_knee), 0.0)
         elif name in ("te_1x", "te_2x"):
-            block = harmonic(problem, int(name[3]), theta, full)
-            add(name, te_column_labels(problem, int(name[3])), block)
+            order = te_order_of(name)
+            add(name, te_column_labels(problem, order), harmonic(problem, order, theta, full))
             for k in overtones_of(problem, effects, name):
                 add(name, [f"sin_{k}x", f"cos_{k}x"], harmonic(problem, k, theta, full)[:, :2])
         elif name == "low_load_efficiency":
@@ -298,22 +306,6 @@ def _viscosity(problem: Problem, effects: tuple[str, ...], theta: dict, inp: dic
     return fx.viscosity_ratio(inp["temperature_C"],
                               theta[key_of("temperature_dependence", "b")],
                               fx.REFERENCE_TEMPERATURE_C, problem.viscosity_C)
-
-
-def solve(X: np.ndarray, y: np.ndarray, lower: np.ndarray, upper: np.ndarray) -> np.ndarray:
-    """Linear least squares with bounds, on columns scaled to unit RMS. When the free
-    solution leaves the bounds, the rows are folded into the columns' triangular factor
-    (X = QR: ‖Xb − y‖² = ‖Rb − Qᵀy‖² + const), so that the bounded solver's iterations work
-    on p × p instead of n × p."""
-    norm = np.sqrt(np.mean(X * X, axis=0))
-    norm[norm == 0] = 1.0
-    Xs = X / norm
-    beta = np.linalg.lstsq(Xs, y, rcond=None)[0]
-    lo, hi = lower * norm, upper * norm
-    if np.any(beta < lo) or np.any(beta > hi):
-        Q, R = np.linalg.qr(Xs)
-        beta = lsq_linear(R, Q.T @ y, bounds=(lo, hi), method="bvls").x
-    return beta / norm
 
 
 # --------------------------------------------------------------------------- fitting

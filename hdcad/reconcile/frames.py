@@ -20,8 +20,9 @@ error of both splines) is kept on the same terms, two amplitudes more.
 from __future__ import annotations
 
 from . import effects as fx
-from .fitting import Fit, Problem, fit_model
+from .fitting import Fit, Problem, finish, fit_model, nonlinear
 from .gates import BIC_MIN, bic_gain, effective_n
+from .harmonics import te_order_of
 from .noise import noise_rms
 
 # a frame other than the fixed one, and a second frame's share, must explain this many noise
@@ -47,22 +48,46 @@ def frames(ratio: float) -> tuple[float, ...]:
 
 
 def _orders(names) -> list[tuple[str, int]]:
-    return [(n, int(n[3])) for n in names if n in ("te_1x", "te_2x")]
+    return [(n, te_order_of(n)) for n in names if n in ("te_1x", "te_2x")]
 
 
-def choose_frames(problem: Problem, start: Fit) -> None:
+def choose_frames(problem: Problem, start: Fit) -> dict[str, Fit]:
     """Vibration: sets ``problem.te_frames`` to the frame in which each error alone fits
     ``start``'s residual best, the fixed frame unless another lowers the BIC by more than
-    ``BIC_MIN`` and explains ``FRAME_EXPLAINED_MIN`` noise variances more."""
+    ``BIC_MIN`` and explains ``FRAME_EXPLAINED_MIN`` noise variances more. Returns each
+    error's single fit in its chosen frame (the gear search's first singles)."""
+    chosen: dict[str, Fit] = {}
     if problem.kind != "vibration":
-        return
+        return chosen
     for name, k in _orders(fx.applicable(problem.kind)):
-        fits = {}
-        for s in frames(problem.base.figures["ratio"][0]):
-            problem.te_frames[k] = s
-            fits[s] = fit_model(problem, start.effects + (name,), start.theta)
-        best = min(fits, key=lambda s: fits[s].rss)
-        problem.te_frames[k] = best if _beyond(problem, fits[0.0], fits[best]) else 0.0
+        problem.te_frames[k] = 0.0
+        fixed = fit_model(problem, start.effects + (name,), start.theta)
+        s, trial = _best_frame(problem, k, fixed, 0.0, problem.te_frames)
+        keep = trial is not None and _beyond(problem, fixed, trial)
+        problem.te_frames[k] = s if keep else 0.0
+        chosen[name] = trial if keep else fixed
+    return chosen
+
+
+def _best_frame(problem: Problem, k: int, fit: Fit, skip: float,
+                frames_of_k: dict[int, float]) -> tuple[float, Fit | None]:
+    """The frame of order ``k`` (other than ``skip``) whose error fits best at ``fit``'s
+    damping and stiffness (amplitudes only), fitted in full from there when it already
+    fits better than ``fit`` (else None: polishing the joint is what costs). Sets the frame
+    in ``frames_of_k`` (the problem's ``te_frames`` or ``te_second_frames``)."""
+    shapes = len(nonlinear(problem.kind, fit.effects))
+    trials = {}
+    for s in frames(problem.base.figures["ratio"][0]):
+        if s != skip:
+            frames_of_k[k] = s
+            trials[s] = finish(problem, fit.effects, fit.theta, shapes)
+    if not trials:
+        return skip, None
+    best = min(trials, key=lambda s: trials[s].rss)
+    frames_of_k[k] = best
+    if trials[best].rss >= fit.rss:
+        return best, None
+    return best, fit_model(problem, fit.effects, fit.theta)
 
 
 def _beyond(problem: Problem, *alternatives: Fit) -> bool:
@@ -95,16 +120,12 @@ def refine_frames(problem: Problem, fit: Fit) -> Fit:
             problem.notes.append(
                 f"{name}: an error turning with the output member fits the run-up better, "
                 f"at {k * (1 + problem.te_frames[k]):.4f} cycles per WG revolution")
-        trials = {}
-        for s in frames(problem.base.figures["ratio"][0]):
-            if s != problem.te_frames.get(k, 0.0):
-                problem.te_second_frames[k] = s
-                trials[s] = fit_model(problem, fit.effects, fit.theta)
-        s = min(trials, key=lambda q: trials[q].rss)
-        if _beyond(problem, fit, modulated, trials[s]):
-            problem.te_second_frames[k], fit = s, trials[s]
+        s, trial = _best_frame(problem, k, fit, problem.te_frames.get(k, 0.0),
+                               problem.te_second_frames)
+        if trial is not None and _beyond(problem, fit, modulated, trial):
+            fit = trial
             problem.notes.append(f"{name}: a share turning at {k * (1 + s):.4f} cycles "
                                  "per WG revolution kept beside it (BIC)")
         else:
-            del problem.te_second_frames[k]
+            problem.te_second_frames.pop(k, None)
     return fit

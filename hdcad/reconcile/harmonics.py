@@ -36,6 +36,11 @@ def te_labels(order: int) -> tuple[str, ...]:
 TE_LABELS = te_labels(TE_ORDER)
 
 
+def te_order_of(name: str) -> int:
+    """Cycles per WG revolution k of the error effect ``name`` (``te_1x`` → 1)."""
+    return int(name[3])
+
+
 def harmonic(problem: Problem, order: int, theta: dict, full: bool,
              fixed_frame: bool = False) -> np.ndarray:
     """The error's columns at ``order`` on the fitted rows or every row (``full``):

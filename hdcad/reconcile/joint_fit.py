@@ -13,7 +13,7 @@ from scipy.optimize import least_squares
 from . import joint
 from .baseline import STIFFNESS_SPREAD
 from .fitting import Fit, Problem, columns, finish, nonlinear
-from .harmonics import TE_ORDER_MAX, te_basis, te_width
+from .harmonics import TE_ORDER_MAX, te_basis, te_order_of, te_width
 from .gates import bic_best, effective_n
 
 # relative step of the finite differences in ln ζ and the stiffness scale
@@ -79,7 +79,7 @@ def _curve_order(problem: Problem, model: "_CurveModel", x: np.ndarray) -> Fit:
     fits = {}
     for order in range(base_order, TE_ORDER_MAX + 1):
         problem.te_order = order
-        widths = [te_width(problem, int(e[3])) for e in model.te]
+        widths = [te_width(problem, te_order_of(e)) for e in model.te]
         keep = [s + j for s, w in zip(starts, widths) for j in range(w)]
         D = np.column_stack([tangent[:, keep], model.X_add[problem.rows]])
         delta = np.linalg.lstsq(D, r, rcond=None)[0]
@@ -98,7 +98,7 @@ def _curve_order(problem: Problem, model: "_CurveModel", x: np.ndarray) -> Fit:
 
 def _block_starts(problem: Problem, te: list[str]) -> list[int]:
     """First column of each named error's block in the basis at the problem's order."""
-    widths = [te_width(problem, int(e[3])) for e in te]
+    widths = [te_width(problem, te_order_of(e)) for e in te]
     return [int(v) for v in np.cumsum([0] + widths[:-1])]
 
 
@@ -129,7 +129,7 @@ class _CurveModel:
         return joint.peak_twist(self.response(x)[0], self.U @ self._split(x)[0])
 
     def basis(self) -> np.ndarray:
-        return np.column_stack([c for e in self.te for c in te_basis(self.problem, int(e[3]))])
+        return np.column_stack([c for e in self.te for c in te_basis(self.problem, te_order_of(e))])
 
     def solve(self, x0: np.ndarray, evaluations: int = _MAX_EVALUATIONS):
         # least_squares' gradient tolerance is absolute: put it in the start residual's
@@ -148,7 +148,7 @@ class _CurveModel:
         saved = self.problem.te_order
         self.problem.te_order = order
         narrow_starts = _block_starts(self.problem, self.te)
-        widths = [te_width(self.problem, int(e[3])) for e in self.te]
+        widths = [te_width(self.problem, te_order_of(e)) for e in self.te]
         self.problem.te_order = saved
         wide = np.zeros(len(self.te_index))
         for s, s_narrow, w in zip(_block_starts(self.problem, self.te), narrow_starts, widths):

@@ -8,7 +8,7 @@ import numpy as np
 
 from . import effects as fx
 from .fitting import Fit, Problem, key_of, parameters_of
-from .harmonics import TE_LABELS, frames_of, legendre
+from .harmonics import TE_LABELS, frames_of, legendre, te_order_of
 from .rig import RIG_EFFECTS
 
 
@@ -31,6 +31,8 @@ def rig_params(problem: Problem, fit: Fit, effect: str) -> dict[str, dict]:
         out["amplitude"] = {"value": math.hypot(b["a1"], b["b1"]), "unit": unit}
     if effect == "encoder_eccentricity":
         out["amplitude"] = {"value": math.hypot(b["a"], b["b"]), "unit": unit}
+    if key_of(effect, "torque_gain") in fit.theta:
+        out["torque_gain"] = {"value": fit.theta[key_of(effect, "torque_gain")], "unit": "-"}
     return out
 
 
@@ -112,7 +114,7 @@ def effect_params(problem: Problem, fit: Fit, effect: str) -> dict[str, dict]:
             u = float(fx.progressive_twist(np.array(problem.scales["T0"]), knee)) / knee
             out.update({"T_k": (knee, "N·m"), "K_h_at_T0": ((1 + 3 * u * u) / c, "N·m/rad")})
     elif effect in ("te_1x", "te_2x"):
-        out = {**_te(b, fit.theta), **_frames(problem, b, int(effect[3]))}
+        out = {**_te(b, fit.theta), **_frames(problem, b, te_order_of(effect))}
     elif effect == "low_load_efficiency":
         out = {"c": (th["c"], "-"), "q": (th["q"], "-"), "s": (th["s"], "-"),
                "Ke_at_alpha_0.58_1000rpm": (

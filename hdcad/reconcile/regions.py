@@ -14,7 +14,7 @@ import math
 import numpy as np
 
 from .fitting import Problem
-from .harmonics import harmonic
+from .harmonics import harmonic, te_order_of
 
 # Significance of a region or a harmonic: z-score against the noise, and a floor relative
 # to the noise so that negligible structure is not reported.
@@ -113,7 +113,7 @@ def harmonics(problem, residual, sigma, tau, theta=None):
 def unexplained(problem, final, sigma, tau, harmonics, fit) -> list[str]:
     """Significant structure left in the residual after the accepted effects."""
     out = []
-    explained_orders = ({int(e[3]) for e in fit.effects if e.startswith("te_")}
+    explained_orders = ({te_order_of(e) for e in fit.effects if e.startswith("te_")}
                         | set(problem.te_overtones))
     for k, rms, sig in harmonics:
         if sig and k not in explained_orders:

@@ -2,8 +2,9 @@
 
 They are fitted like the gear effects but reported apart (``measurement_effects``), so a
 reviewer knows whether to fix the rig or the model. Effects of the rig that are exactly a
-nuisance of the catalog model are not separable and are said so instead: a torque- or
-angle-sensor gain in torsion reads as the stiffness scale, in efficiency as the level.
+nuisance of the catalog model are not separable and are said so instead: a twist sensor's
+gain in torsion reads as the stiffness scale (a torque channel's gain moves the catalog
+curve's corners and is fitted), a torque sensor's gain in efficiency as the level.
 Channels in the wrong unit are found before any fit (:mod:`.units`).
 
 References
@@ -26,6 +27,10 @@ from .effects import Effect, Parameter
 # Time constant of a warm-up drift [half-records]: from a tenth of the record (a rig that
 # settles early in the test) to ten records (a slow curvature).
 WARM_UP_TAU = (0.2, 20.0)
+
+# Largest torque-channel gain error read as the rig's [-]: a shunt or calibration constant
+# tens of per cent off; kgf·m against N·m (×9.81) is a unit, found before the fit.
+TORQUE_GAIN_LIMIT = 0.3
 
 # Harmonics of an encoder's interpolation error: read at the measured angle y = θ + e(θ),
 # the error is still periodic in y, its k-th harmonic (2π·e/p)^(k−1) of the first.
@@ -94,12 +99,18 @@ RIG_EFFECTS: dict[str, Effect] = {e.name: e for e in (
         kinds=("torsion",)),
     Effect(
         name="sensor_gain",
-        description=("The output angle sensor's scale is off: the measured angle grows by "
-                     "(1 + g) times the true one. The ratio is exact (tooth counts), so a "
-                     "slope error is the sensor's."),
-        form="y += g·φ/R",
-        parameters=(_linear("g", "-", "relative gain error"),),
-        kinds=("transmission",)),
+        description=("A channel's scale is off. Transmission: the output angle sensor reads "
+                     "(1 + g) times the true angle (the ratio is exact, tooth counts, so a "
+                     "slope error is the sensor's). Torsion: the torque channel reads "
+                     "(1 + g_T) times the true torque (a shunt or calibration constant), so "
+                     "the catalog curve's corners T1 and T2 sit at (1 + g_T)·T1 and "
+                     "(1 + g_T)·T2 of the recorded torque; a twist sensor's gain scales "
+                     "every segment alike and reads as the stiffness scale instead."),
+        form="transmission: y += g·φ/R; torsion: y = s·θ_catalog(T/(1 + g_T)) + …",
+        parameters=(_linear("g", "-", "relative gain error of the output angle"),
+                    Parameter("torque_gain", "-", "relative gain error of the torque channel",
+                              -TORQUE_GAIN_LIMIT, TORQUE_GAIN_LIMIT, "1", start=0.0)),
+        kinds=("transmission", "torsion")),
 )}
 
 RIG_NAMES = tuple(RIG_EFFECTS)
@@ -107,6 +118,15 @@ RIG_NAMES = tuple(RIG_EFFECTS)
 
 def applicable(kind: str) -> tuple[str, ...]:
     return tuple(n for n, e in RIG_EFFECTS.items() if kind in e.kinds)
+
+
+def nonlinear_parameters(name: str, kind: str) -> tuple[Parameter, ...]:
+    """The measurement effect's parameters fitted by nonlinear least squares for this kind
+    (a torque gain moves the catalog curve's corners only in torsion)."""
+    params = RIG_EFFECTS[name].nonlinear
+    if name == "sensor_gain":
+        return params if kind == "torsion" else ()
+    return params
 
 
 def columns(name: str, inputs: dict[str, np.ndarray], step_position: float,
@@ -121,7 +141,9 @@ def columns(name: str, inputs: dict[str, np.ndarray], step_position: float,
     if name == "encoder_eccentricity":
         out = inputs["output_angle_rad"]
         return ["a", "b"], np.column_stack([np.sin(out), np.cos(out)])
-    if name == "sensor_gain":
+    if name == "sensor_gain":  # torsion: read through the catalog curve's torque
+        if "output_angle_rad" not in inputs:
+            return [], np.zeros((len(u), 0))
         return ["g"], inputs["output_angle_rad"]
     if name == "sensor_play":
         return ["p"], inputs["branch_direction"]

@@ -31,12 +31,11 @@ import itertools
 import math
 from dataclasses import replace
 
-
 from . import effects as fx
 from . import rig, springs
 from .fitting import Fit, Problem, finish, fit_model, nonlinear
-from .gates import (BIC_MIN, EXPLAINED_MIN, GATE_NOTE, Candidate, Gate, gate, has_evidence,
-                    round_noise)
+from .gates import (BIC_MIN, EXPLAINED_MIN, GATE_NOTE, Candidate, Gate, bic_gain, effective_n,
+                    gate, has_evidence, round_noise)
 from .loops import THROUGH_GEAR, preisach_forms, use_preisach
 from .refine import fit_viscosity_law, refine_te_order
 
@@ -48,14 +47,21 @@ __all__ = ["BIC_MIN", "GATE_NOTE", "Candidate", "Gate", "gate", "round_noise", "
 # shared member's formula misses, not an identified second effect.
 SECOND_AMBIGUITY = 0.05
 MAX_GEAR_EFFECTS = 2
+# A measurement effect that a gear effect nearly reads as must beat it by BIC_MIN, not only
+# fit better: a torque channel's gain takes extra twist that grows with torque, as a series
+# spring does (a loop and a spring together were read as a gain beside the loop, ΔBIC 342.5
+# against the spring's 340.6, when the loop's single fit was still poor)
+GEAR_TWIN = {("torsion", "sensor_gain"): "housing_compliance"}
 
 
-def select_rig(problem: Problem, start: Fit) -> tuple[Fit, list[dict], dict[str, Fit] | None]:
+def select_rig(problem: Problem, start: Fit, known: dict[str, Fit] | None = None
+               ) -> tuple[Fit, list[dict], dict[str, Fit] | None]:
     """Add measurement-chain effects greedily while one passes the gates and explains more
     than any single gear effect would (a drift with test time must not take a temperature
-    effect of a test that warms steadily, nor the reverse). Also returns the single gear
-    effects fitted on the final model of this stage (None when none were)."""
-    current, table, singles = start, [], None
+    effect of a test that warms steadily, nor the reverse). ``known`` holds single gear
+    effects already fitted on ``start``. Also returns the single gear effects fitted on the
+    final model of this stage (None when none were)."""
+    current, table, singles, known = start, [], None, known or {}
     names = list(rig.applicable(problem.kind))
     gear = fx.applicable(problem.kind)
     while names:
@@ -70,13 +76,16 @@ def select_rig(problem: Problem, start: Fit) -> tuple[Fit, list[dict], dict[str,
                     current.residual(problem),
                     problem.base.inputs["measured_rad"][problem.rows])
             fits[name] = fit_model(problem, current.effects + (name,), current.theta)
-        singles = {n: fit_model(problem, current.effects + (n,), current.theta) for n in gear}
+        singles = {n: known[n] if n in known
+                   else fit_model(problem, current.effects + (n,), current.theta)
+                   for n in gear}
         rivals = list(singles.values())
         sigma, tau = round_noise(problem, list(fits.values()) + rivals)
         gates = {n: gate(problem, current, f, sigma, tau) for n, f in fits.items()}
-        rival = max((gate(problem, current, f, sigma, tau).delta_bic for f in rivals),
-                    default=-math.inf)
+        alone = {n: gate(problem, current, f, sigma, tau).delta_bic for n, f in singles.items()}
+        rival = max(alone.values(), default=-math.inf)
         ok = {n: g.passes() and g.delta_bic > rival
+              and g.delta_bic > alone.get(GEAR_TWIN.get((problem.kind, n)), -math.inf) + BIC_MIN
               and _rig_signature(problem, n, current, fits[n]) for n, g in gates.items()}
         table.append([{"effect": n, "delta_bic": g.delta_bic, "cv_gain": g.cv_gain,
                        "explained_var_over_noise": g.explained, "passes": ok[n]}
@@ -85,7 +94,7 @@ def select_rig(problem: Problem, start: Fit) -> tuple[Fit, list[dict], dict[str,
         if not passing:
             break
         best = max(passing, key=lambda n: gates[n].delta_bic)
-        current, singles = fits[best], None
+        current, singles, known = fits[best], None, {}
         names.remove(best)
     return current, table, singles
 
@@ -93,8 +102,11 @@ def select_rig(problem: Problem, start: Fit) -> tuple[Fit, list[dict], dict[str,
 def _rig_signature(problem: Problem, name: str, without: Fit, fit: Fit) -> bool:
     """A measurement effect's own signature, beyond a better fit: an encoder's
     interpolation ripple is the same over the whole span of the angle; a reading's play
-    keeps the branches apart at the torque's extremes, where a loop of the gear closes."""
+    keeps the branches apart at the torque's extremes, where a loop of the gear closes; a
+    torque channel's gain moves the catalog curve's corners."""
     inputs, rows = problem.base.inputs, problem.rows
+    if name == "sensor_gain" and problem.kind == "torsion":
+        return _corners_moved(problem, without, fit)
     if name == "sensor_play":
         return rig.apart_at_the_tips(without.residual(problem), inputs["torque_Nm"][rows],
                                      inputs["branch_direction"][rows])
@@ -102,6 +114,20 @@ def _rig_signature(problem: Problem, name: str, without: Fit, fit: Fit) -> bool:
         return True
     return rig.ripple_everywhere(without.residual(problem), fit.residual(problem),
                                  inputs["measured_rad"][rows])
+
+
+def _corners_moved(problem: Problem, without: Fit, fit: Fit) -> bool:
+    """A curve only softer or stiffer than the catalog beyond its spread (a twist sensor's
+    gain, a gear out of its scatter) is fitted by a torque gain too, which then moves the
+    corners as little as it can: with the compliance scale left free in both, the gain
+    (``fit``) must still lower the BIC by more than ``BIC_MIN`` below ``without``."""
+    problem.scale_free = True
+    try:
+        free = fit_model(problem, without.effects, without.theta)
+        gained = fit_model(problem, fit.effects, fit.theta)
+    finally:
+        problem.scale_free = False
+    return bic_gain(free, gained, effective_n(problem, gained.residual(problem))) > BIC_MIN
 
 
 def select_gear(problem: Problem, start: Fit, singles: dict[str, Fit] | None = None
