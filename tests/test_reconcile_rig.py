@@ -191,3 +191,5 @@ def test_suite_k_s_wrong_shunt_is_the_rig_s():
     found = {m["effect"]: m["params"] for m in result["measurement_effects"]}
     assert found["sensor_gain"]["torque_gain"]["value"] == pytest.approx(
         case.nuisance["torque_gain"] - 1, abs=0.05)
+    (gain,) = [m for m in result["measurement_effects"] if m["effect"] == "sensor_gain"]
+    assert gain["reading"].startswith("the torque channel reads 17.9% low")

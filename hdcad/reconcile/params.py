@@ -36,6 +36,20 @@ def rig_params(problem: Problem, fit: Fit, effect: str) -> dict[str, dict]:
     return out
 
 
+def rig_entry(problem: Problem, fit: Fit, effect: str) -> dict:
+    """A measurement effect as reported: its parameters and, where one number says what to
+    fix on the rig, a sentence (a torque channel's gain)."""
+    params = rig_params(problem, fit, effect)
+    entry = {"effect": effect, "params": params}
+    if "torque_gain" in params:
+        g = params["torque_gain"]["value"]
+        entry["reading"] = (f"the torque channel reads {abs(g):.1%} {'high' if g > 0 else 'low'} "
+                            f"(torque_gain = {g:.4g}; a shunt or calibration constant): the "
+                            f"catalog curve's corners sit at {1 + g:.3f} × T1 and T2 of the "
+                            "recorded torque")
+    return entry
+
+
 def _te(b: dict[str, float], th: dict[str, float]) -> dict[str, tuple[float, str]]:
     out = {"amplitude": (math.hypot(b["sin"], b["cos"]), "rad"),
            "phase": (math.atan2(b["cos"], b["sin"]), "rad")}
@@ -126,4 +140,4 @@ def effect_params(problem: Problem, fit: Fit, effect: str) -> dict[str, dict]:
     return {k: {"value": float(v), "unit": u} for k, (v, u) in out.items()}
 
 
-__all__ = ["effect_form", "effect_params", "rig_params", "TE_LABELS"]
+__all__ = ["effect_form", "effect_params", "rig_entry", "rig_params", "TE_LABELS"]

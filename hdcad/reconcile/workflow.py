@@ -33,7 +33,7 @@ from . import units
 from .data import validate_data
 from .fitting import Fit, Problem, fit_model, make_problem, set_rows
 from .noise import correlation_time, noise_rms
-from .params import effect_form, effect_params, rig_params
+from .params import effect_form, effect_params, rig_entry
 
 GATE_NOTE = search.GATE_NOTE
 # A sample further than this many noise RMS from the median of its neighbours is a gross
@@ -169,7 +169,7 @@ def reconcile(kind: str, data: dict, model: GearModel, catalog: Catalog,
     tau = correlation_time(residual[keep])
     steps = _steps(problem, named, candidates, final, keep)
     measurement = [f.as_dict() for f in fixes] + [
-        {"effect": e, "params": rig_params(problem, final, e)}
+        rig_entry(problem, final, e)
         for e in final.effects if e in search.rig.RIG_EFFECTS]
     nuisances = readings.nuisances(problem, final)
     return _result(problem, model, start, final, resid0, residual, sigma, tau, keep, steps,
