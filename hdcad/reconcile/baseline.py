@@ -29,6 +29,7 @@ from ..checks.stiffness import StiffnessCurve
 from ..errors import InputError
 from ..models import GearModel
 from .effects import Parameter
+from .rig import TORQUE_GAIN_KEY
 
 # FD ratings depend on speed; the rated torque used for α = T/Tr is the 1450 r/min row
 # (table 310-1), the speed hdcad's catalog listing shows for FD models.
@@ -88,7 +89,6 @@ class Baseline:
 
 
 _WIDTHS_KEPT = 8
-TORQUE_GAIN_KEY = "sensor_gain.torque_gain"
 
 
 def _curve(model: GearModel, kind: str) -> tuple[StiffnessCurve, str]:

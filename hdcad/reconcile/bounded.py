@@ -4,10 +4,10 @@ A fit's shape search solves min ‖X·b − y‖² with lo ≤ b ≤ hi thousand
 design matrix of a few columns (the catalog curve's scale and offset, the effects'
 amplitudes), most of them with a bound in force (the stiffness scale within the catalog's
 spread, a loop's or play's amplitude at zero). The rows are folded into the columns'
-triangular factor once (X = QR: ‖Xb − y‖² = ‖Rb − Qᵀy‖² + const) and the bounded problem
-is solved on p × p by the active-set method of Stark and Parker, written here in a few
-lines because scipy's general ``lsq_linear(method="bvls")`` spends most of its time in
-per-call overhead at this size. The objective is strictly convex when R has full rank, so
+triangular factor once (X = QR: ‖Xb − y‖² = ‖Rb − Qᵀy‖² + const, R and Qᵀy read from the
+factor of [X y]) and the bounded problem is solved on p × p by the active-set method of
+Stark and Parker, written here in a few lines because scipy's general
+``lsq_linear(method="bvls")`` spends most of its time in per-call overhead at this size. The objective is strictly convex when R has full rank, so
 the solution (the point that satisfies the Karush–Kuhn–Tucker conditions) is unique; a
 rank-deficient R, or a problem the method does not settle in ``MAX_ROUNDS``, goes to
 scipy's solver.
@@ -38,14 +38,16 @@ KKT_TOLERANCE = 1e-12
 def solve(X: np.ndarray, y: np.ndarray, lower: np.ndarray, upper: np.ndarray) -> np.ndarray:
     """b minimising ‖X·b − y‖² with ``lower`` ≤ b ≤ ``upper`` (±inf where unbounded), on
     columns scaled to unit RMS."""
-    norm = np.sqrt(np.mean(X * X, axis=0))
+    norm = np.sqrt(np.einsum("ij,ij->j", X, X) / max(len(X), 1))
     norm[norm == 0] = 1.0
     Xs = X / norm
     lo, hi = lower * norm, upper * norm
-    Q, R = np.linalg.qr(Xs)
-    c = Q.T @ y
+    p = Xs.shape[1]
+    # the factor of [X y]: its first p columns are R and Qᵀy, without forming Q
+    Ry = np.linalg.qr(np.column_stack([Xs, y]), mode="r")
+    R, c = Ry[:p, :p], Ry[:p, p]
     diagonal = np.abs(np.diag(R))
-    if diagonal.size and diagonal.min() > RANK_TOLERANCE * diagonal.max():
+    if R.shape[0] == p and diagonal.size and diagonal.min() > RANK_TOLERANCE * diagonal.max():
         beta = _active_set(R, c, lo, hi)
         if beta is not None:  # clipped: a bound scaled and back can be a rounding off
             return np.clip(beta / norm, lower, upper)

@@ -77,6 +77,15 @@ class Effect:
         return tuple(p for p in self.parameters if not p.linear)
 
 
+# Shared nonlinear parameters: one value per model, whichever effect brings them.
+SHARED = ("damping_ratio", "stiffness_scale")
+
+
+def key_of(effect: str, param: str) -> str:
+    """The name of an effect's parameter in a fit's ``theta``."""
+    return param if param in SHARED else f"{effect}.{param}"
+
+
 # --------------------------------------------------------------------------- forms
 def turning_points(x: np.ndarray, threshold: float) -> tuple[np.ndarray, int]:
     """Indices where a quasi-static signal reverses by more than ``threshold``.

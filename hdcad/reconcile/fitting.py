@@ -5,7 +5,8 @@ efficiency level), the columns of the measurement-chain effects (:mod:`.rig`) an
 the gear effects (:mod:`.effects`). Amplitudes enter linearly and are solved by linear least
 squares; shapes (widths, loop parameters, damping, the corner width of the catalog curve)
 are fitted by ``scipy.optimize.least_squares`` over the linear solution (variable
-projection), started from a grid and from the values of simpler models (multi-start).
+projection, its Jacobian from :mod:`.varpro`), started from a grid and from the values of
+simpler models (multi-start).
 
 Rows flagged as gross outliers are left out of the fit (a hard-redescending robust loss).
 """
@@ -23,6 +24,8 @@ from . import effects as fx
 from . import preisach
 from .bounded import solve
 from . import rig
+from .effects import key_of
+from .varpro import free_amplitudes, projected_jacobian, steps
 from .harmonics import TE_ORDER, harmonic, overtones_of, te_column_labels, te_order_of
 
 # Above this many rows the fit uses this many rows drawn at random (fixed seed; time order
@@ -39,8 +42,6 @@ CV_CHUNKS = 25           # 5 contiguous chunks per fold, spread over the record
 # Catalog figures that scale effect bounds, and the kinds whose effects use them.
 FIGURE_KINDS = {"hysteresis_rad": ("torsion",), "backlash_rad": ("torsion",),
                 "accuracy_rad": ("transmission", "vibration")}
-# Shared nonlinear parameters: one value per model, whichever effect brings them.
-SHARED = ("damping_ratio", "stiffness_scale")
 @dataclass
 class Problem:
     """One data set with its baseline and everything the effect columns need."""
@@ -188,10 +189,6 @@ def set_rows(problem: Problem, rows: np.ndarray) -> None:
 
 
 # --------------------------------------------------------------------------- columns
-def key_of(effect: str, param: str) -> str:
-    return param if param in SHARED else f"{effect}.{param}"
-
-
 def nonlinear(kind: str, effects: tuple[str, ...]) -> dict[str, fx.Parameter]:
     """Nonlinear parameters of a model: the baseline's nuisances and the effects' shapes."""
     out: dict[str, fx.Parameter] = {f"catalog.{p.name}": p
@@ -241,7 +238,7 @@ def columns(problem: Problem, effects: tuple[str, ...], theta: dict[str, float],
     for name in effects:
         th = {p.name: theta[key_of(name, p.name)] for p in parameters_of(name, problem.kind)}
         if name in rig.RIG_EFFECTS:
-            names, block = rig.columns(name, inp, problem.step_position, th)
+            names, block = rig.columns(name, problem.kind, inp, problem.step_position, th)
             add(name, names, block)
         elif name == "hysteresis":
             z = _hysteresis_state(problem, inp["torque_Nm"], th, branches, rows)
@@ -343,9 +340,7 @@ def fit_model(problem: Problem, effects: tuple[str, ...],
     searched = [k for k in new if params[k].start is None]
 
     def rss_of(th):
-        Xf, beta, *_ = _evaluate(problem, effects, th)
-        r = problem.y - Xf @ beta
-        return float(r @ r)
+        return rss_at(problem, effects, th)
 
     def grid_search(th, names, points):
         """Best of a grid over ``names`` with the other shape parameters held."""
@@ -378,6 +373,14 @@ def fit_model(problem: Problem, effects: tuple[str, ...],
     return finish(problem, effects, theta, len(in_use))
 
 
+def rss_at(problem: Problem, effects: tuple[str, ...], theta: dict[str, float]) -> float:
+    """The residual sum of squares on the fitted rows at the shape ``theta`` (amplitudes
+    solved; what comparing shapes needs, without the prediction and the CV of a Fit)."""
+    Xf, beta, *_ = _evaluate(problem, effects, theta)
+    r = problem.y - Xf @ beta
+    return float(r @ r)
+
+
 def finish(problem: Problem, effects: tuple[str, ...], theta: dict[str, float],
            n_shapes: int) -> Fit:
     """The :class:`Fit` of a model at the shape ``theta``: amplitudes, prediction, CV."""
@@ -402,18 +405,35 @@ def _polish(problem, effects, theta, keys, params, scale):
         return {**theta, **{k: (math.exp(v) if f[0] else float(v))
                             for k, v, f in zip(keys, x, forms)}}
 
+    last: dict = {}
+
+    def at(x):
+        """The model at ``x``, kept for the Jacobian that least_squares asks for next."""
+        if last.get("x") is None or not np.array_equal(last["x"], x):
+            Xf, beta, _, b_lo, b_hi = _evaluate(problem, effects, from_x(x))
+            last.update(x=x.copy(), Xf=Xf, beta=beta, free=free_amplitudes(beta, b_lo, b_hi))
+        return last
+
     def raw(x):
-        Xf, beta, *_ = _evaluate(problem, effects, from_x(x))
-        return problem.y - Xf @ beta
+        m = at(x)
+        return problem.y - m["Xf"] @ m["beta"]
+
+    def derivative(x):
+        def columns_at(xk):
+            return columns(problem, effects, from_x(xk))[0]
+        J = projected_jacobian(problem.y, at(x), x, lo, hi, columns_at)
+        if J is None:  # collinear amplitudes: differences of the whole residual
+            J = np.column_stack([(raw(xk) - raw(x)) / h for xk, h in steps(x, lo, hi)])
+        return J / unit
 
     x0 = np.clip(to_x(theta), lo + 1e-9 * (hi - lo), hi - 1e-9 * (hi - lo))
     # in the start's RMS: least_squares' gradient tolerance is absolute, and a residual of
     # micro-radians would otherwise stop it at the start
     unit = float(np.sqrt(np.mean(raw(x0) ** 2))) or 1.0
     residual = lambda x: raw(x) / unit
-    result = least_squares(residual, x0, bounds=(lo, hi), x_scale=np.maximum(hi - lo, 1e-9),
-                           diff_step=1e-4, max_nfev=40 * len(keys), ftol=POLISH_TOL,
-                           xtol=POLISH_TOL)
+    result = least_squares(residual, x0, jac=derivative, bounds=(lo, hi),
+                           x_scale=np.maximum(hi - lo, 1e-9), max_nfev=40 * len(keys),
+                           ftol=POLISH_TOL, xtol=POLISH_TOL)
     return from_x(result.x)
 
 

@@ -20,7 +20,7 @@ error of both splines) is kept on the same terms, two amplitudes more.
 from __future__ import annotations
 
 from . import effects as fx
-from .fitting import Fit, Problem, finish, fit_model, nonlinear
+from .fitting import Fit, Problem, fit_model, rss_at
 from .gates import BIC_MIN, bic_gain, effective_n
 from .harmonics import te_order_of
 from .noise import noise_rms
@@ -62,32 +62,35 @@ def choose_frames(problem: Problem, start: Fit) -> dict[str, Fit]:
     for name, k in _orders(fx.applicable(problem.kind)):
         problem.te_frames[k] = 0.0
         fixed = fit_model(problem, start.effects + (name,), start.theta)
-        s, trial = _best_frame(problem, k, fixed, 0.0, problem.te_frames)
-        keep = trial is not None and _beyond(problem, fixed, trial)
-        problem.te_frames[k] = s if keep else 0.0
-        chosen[name] = trial if keep else fixed
+        kept = _better_frame(problem, k, 0.0, problem.te_frames, fixed)
+        chosen[name] = kept[1] if kept else fixed
     return chosen
 
 
-def _best_frame(problem: Problem, k: int, fit: Fit, skip: float,
-                frames_of_k: dict[int, float]) -> tuple[float, Fit | None]:
-    """The frame of order ``k`` (other than ``skip``) whose error fits best at ``fit``'s
-    damping and stiffness (amplitudes only), fitted in full from there when it already
-    fits better than ``fit`` (else None: polishing the joint is what costs). Sets the frame
-    in ``frames_of_k`` (the problem's ``te_frames`` or ``te_second_frames``)."""
-    shapes = len(nonlinear(problem.kind, fit.effects))
+def _better_frame(problem: Problem, k: int, skip: float, frames_of_k: dict[int, float],
+                  fit: Fit, *others: Fit) -> tuple[float, Fit] | None:
+    """(frame, fit) of order ``k`` other than ``skip`` that beats ``fit`` and ``others`` on
+    :func:`_beyond`, set in ``frames_of_k`` (the problem's ``te_frames`` or
+    ``te_second_frames``), or None with ``frames_of_k`` as it was. The frames are compared
+    at ``fit``'s damping and stiffness (amplitudes only) and only the best is fitted in
+    full, when it already fits better than ``fit`` (polishing the joint is what costs)."""
+    before = frames_of_k.get(k)
     trials = {}
     for s in frames(problem.base.figures["ratio"][0]):
         if s != skip:
             frames_of_k[k] = s
-            trials[s] = finish(problem, fit.effects, fit.theta, shapes)
-    if not trials:
-        return skip, None
-    best = min(trials, key=lambda s: trials[s].rss)
-    frames_of_k[k] = best
-    if trials[best].rss >= fit.rss:
-        return best, None
-    return best, fit_model(problem, fit.effects, fit.theta)
+            trials[s] = rss_at(problem, fit.effects, fit.theta)
+    best = min(trials, key=trials.get) if trials else None
+    if best is not None and trials[best] < fit.rss:
+        frames_of_k[k] = best
+        trial = fit_model(problem, fit.effects, fit.theta)
+        if _beyond(problem, fit, *others, trial):
+            return best, trial
+    if before is None:
+        frames_of_k.pop(k, None)
+    else:
+        frames_of_k[k] = before
+    return None
 
 
 def _beyond(problem: Problem, *alternatives: Fit) -> bool:
@@ -120,12 +123,10 @@ def refine_frames(problem: Problem, fit: Fit) -> Fit:
             problem.notes.append(
                 f"{name}: an error turning with the output member fits the run-up better, "
                 f"at {k * (1 + problem.te_frames[k]):.4f} cycles per WG revolution")
-        s, trial = _best_frame(problem, k, fit, problem.te_frames.get(k, 0.0),
-                               problem.te_second_frames)
-        if trial is not None and _beyond(problem, fit, modulated, trial):
-            fit = trial
-            problem.notes.append(f"{name}: a share turning at {k * (1 + s):.4f} cycles "
+        kept = _better_frame(problem, k, problem.te_frames.get(k, 0.0),
+                             problem.te_second_frames, fit, modulated)
+        if kept:
+            fit = kept[1]
+            problem.notes.append(f"{name}: a share turning at {k * (1 + kept[0]):.4f} cycles "
                                  "per WG revolution kept beside it (BIC)")
-        else:
-            problem.te_second_frames.pop(k, None)
     return fit

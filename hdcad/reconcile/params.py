@@ -9,7 +9,7 @@ import numpy as np
 from . import effects as fx
 from .fitting import Fit, Problem, key_of, parameters_of
 from .harmonics import TE_LABELS, frames_of, legendre, te_order_of
-from .rig import RIG_EFFECTS
+from .rig import RIG_EFFECTS, TORQUE_GAIN_KEY
 
 
 def _linear(fit: Fit, effect: str) -> dict[str, float]:
@@ -31,8 +31,8 @@ def rig_params(problem: Problem, fit: Fit, effect: str) -> dict[str, dict]:
         out["amplitude"] = {"value": math.hypot(b["a1"], b["b1"]), "unit": unit}
     if effect == "encoder_eccentricity":
         out["amplitude"] = {"value": math.hypot(b["a"], b["b"]), "unit": unit}
-    if key_of(effect, "torque_gain") in fit.theta:
-        out["torque_gain"] = {"value": fit.theta[key_of(effect, "torque_gain")], "unit": "-"}
+    if effect == "sensor_gain" and TORQUE_GAIN_KEY in fit.theta:
+        out["torque_gain"] = {"value": fit.theta[TORQUE_GAIN_KEY], "unit": "-"}
     return out
 
 

@@ -182,13 +182,23 @@ def _one_more(problem: Problem, fit: Fit, attribute: str, bounds: tuple[float, f
     ``bounds`` with the shapes refitted, kept (and ``note(value)`` added) when BIC with the
     effective sample size prefers it; else ``fit`` with the attribute back at 0."""
 
+    tried: dict[float, Fit] = {}
+
     def trial(value: float) -> Fit:
-        setattr(problem, attribute, float(value))
-        return fit_model(problem, fit.effects, fit.theta)
+        """The shapes refitted at ``value``, from those of the nearest value tried (they
+        move little between neighbours, and the polish then takes a few steps)."""
+        value = float(value)
+        if value not in tried:
+            near = min(tried, key=lambda v: abs(v - value), default=None)
+            setattr(problem, attribute, value)
+            tried[value] = fit_model(problem, fit.effects,
+                                     fit.theta if near is None else tried[near].theta)
+        return tried[value]
 
     found = minimize_scalar(lambda v: trial(v).rss, bounds=bounds, method="bounded",
                             options={"xatol": 1e-3, "maxiter": 20})
     wider = trial(found.x)
+    setattr(problem, attribute, float(found.x))
     n_eff = effective_n(problem, wider.residual(problem))
     if bic_best({False: (fit.rss, 0), True: (wider.rss, 1)}, n_eff) is False:
         setattr(problem, attribute, 0.0)

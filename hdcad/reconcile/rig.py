@@ -21,7 +21,7 @@ import functools
 
 import numpy as np
 
-from .effects import Effect, Parameter
+from .effects import Effect, Parameter, key_of
 
 
 # Time constant of a warm-up drift [half-records]: from a tenth of the record (a rig that
@@ -120,20 +120,33 @@ def applicable(kind: str) -> tuple[str, ...]:
     return tuple(n for n, e in RIG_EFFECTS.items() if kind in e.kinds)
 
 
+# What a measurement effect fits in a kind, where that differs by kind: a sensor's gain is
+# the output angle's in transmission (a column) and the torque channel's in torsion (read
+# through the catalog curve's corners by the baseline, at TORQUE_GAIN_KEY).
+KIND_PARAMETERS = {("sensor_gain", "transmission"): ("g",),
+                   ("sensor_gain", "torsion"): ("torque_gain",)}
+TORQUE_GAIN_KEY = key_of("sensor_gain", "torque_gain")
+
+
+def _in_kind(name: str, kind: str, params: tuple[Parameter, ...]) -> tuple[Parameter, ...]:
+    names = KIND_PARAMETERS.get((name, kind))
+    return params if names is None else tuple(p for p in params if p.name in names)
+
+
 def nonlinear_parameters(name: str, kind: str) -> tuple[Parameter, ...]:
-    """The measurement effect's parameters fitted by nonlinear least squares for this kind
-    (a torque gain moves the catalog curve's corners only in torsion)."""
-    params = RIG_EFFECTS[name].nonlinear
-    if name == "sensor_gain":
-        return params if kind == "torsion" else ()
-    return params
+    """The measurement effect's parameters fitted by nonlinear least squares for this kind."""
+    return _in_kind(name, kind, RIG_EFFECTS[name].nonlinear)
 
 
-def columns(name: str, inputs: dict[str, np.ndarray], step_position: float,
+def columns(name: str, kind: str, inputs: dict[str, np.ndarray], step_position: float,
             theta: dict[str, float]) -> tuple[list[str], np.ndarray]:
-    """(linear parameter names, columns) of a measurement effect on the given rows, with its
-    nonlinear parameters ``theta``."""
+    """(linear parameter names, columns) of a measurement effect in ``kind`` on the given
+    rows, with its nonlinear parameters ``theta`` (none when the effect acts only through
+    the baseline in that kind)."""
     u = inputs["record_position"]
+    linear = [p.name for p in _in_kind(name, kind, RIG_EFFECTS[name].parameters) if p.linear]
+    if not linear:
+        return [], np.zeros((len(u), 0))
     if name == "thermal_drift":
         return ["d1", "d2"], np.column_stack([u, warm_up(u, theta["tau"])])
     if name == "angle_offset":
@@ -141,9 +154,7 @@ def columns(name: str, inputs: dict[str, np.ndarray], step_position: float,
     if name == "encoder_eccentricity":
         out = inputs["output_angle_rad"]
         return ["a", "b"], np.column_stack([np.sin(out), np.cos(out)])
-    if name == "sensor_gain":  # torsion: read through the catalog curve's torque
-        if "output_angle_rad" not in inputs:
-            return [], np.zeros((len(u), 0))
+    if name == "sensor_gain":
         return ["g"], inputs["output_angle_rad"]
     if name == "sensor_play":
         return ["p"], inputs["branch_direction"]

@@ -25,7 +25,7 @@ from dataclasses import replace
 
 from scipy.optimize import minimize_scalar
 
-from .fitting import Fit, Problem, finish, fit_model, nonlinear
+from .fitting import Fit, Problem, fit_model, rss_at
 from .gates import BIC_MIN, Candidate, gate
 
 # A clearance is taken up at low torque: the catalog gives lost motion at ±3 % of the
@@ -103,11 +103,10 @@ def _knee_fit(problem: Problem, effects: tuple[str, ...], theta: dict[str, float
     more parameter; leaves the knee set on ``problem``. The knee is searched (bounded, on its
     logarithm) with the other shapes held at ``theta``, then all are fitted at that knee."""
     t0 = problem.scales["T0"]
-    shapes = nonlinear(problem.kind, effects)
 
     def held(log_knee: float) -> float:
         problem.housing_knee = t0 * math.exp(log_knee)
-        return finish(problem, effects, theta, len(shapes)).rss
+        return rss_at(problem, effects, theta)
 
     lo, hi = (math.log(b) for b in KNEE_BOUNDS)
     found = minimize_scalar(held, bounds=(lo, hi), method="bounded",
