@@ -125,12 +125,22 @@ class Fit:
     prediction: np.ndarray          # on every row
     rss: float                      # on the fit rows
     n_params: int
-    cv_mse: float = math.nan
+    cv_value: float = math.nan
     columns: np.ndarray | None = None   # design matrix on the fit rows
+    # (y, lower, upper, folds) of the fit rows: the cross-validation, run when first asked
+    cv_inputs: tuple | None = field(default=None, repr=False, compare=False)
 
     def residual(self, problem: Problem) -> np.ndarray:
         """Residual on the fit rows."""
         return problem.y - self.columns @ self.beta
+
+    @property
+    def cv_mse(self) -> float:
+        """5-fold cross-validated mean-square error with the shapes held (computed when a
+        gate first asks: most fits are only compared by their RSS)."""
+        if math.isnan(self.cv_value) and self.cv_inputs is not None:
+            self.cv_value = _cv_mse(self.columns, *self.cv_inputs)
+        return self.cv_value
 
 
 def _scales(base: baselines.Baseline, notes: list[str]) -> dict[str, float]:
@@ -287,11 +297,24 @@ def _hysteresis_state(problem: Problem, torque: np.ndarray, th: dict, branches, 
     if problem.hysteresis_preisach is not None:
         return problem.preisach_plane.loop(torque, rows, *problem.hysteresis_preisach,
                                            problem.hysteresis_centred)
-    z = fx.hysteresis_state(torque, th["T_s"], th["rho"], th["n"], branches, th["z0"],
-                            th["first_scale"])
-    if problem.hysteresis_centred:
-        z = z - fx.loop_centre(torque, th["T_s"], th["rho"], th["n"], problem.scales["T0"])
-    return z
+    # kept for the Jacobian's steps in the other shapes (the same loop again); the rows and
+    # their branches change only with set_rows, which clears the cache
+    key = (isinstance(rows, slice), problem.hysteresis_centred,
+           *(float(th[k]) for k in ("T_s", "rho", "n", "z0", "first_scale")))
+    kept = problem.cache.setdefault("hysteresis", {})
+    if key not in kept:
+        z = fx.hysteresis_state(torque, th["T_s"], th["rho"], th["n"], branches, th["z0"],
+                                th["first_scale"])
+        if problem.hysteresis_centred:
+            z = z - fx.loop_centre(torque, th["T_s"], th["rho"], th["n"],
+                                   problem.scales["T0"])
+        if len(kept) >= _LOOPS_KEPT:
+            del kept[next(iter(kept))]
+        kept[key] = z
+    return kept[key]
+
+
+_LOOPS_KEPT = 8
 
 
 def _viscosity(problem: Problem, effects: tuple[str, ...], theta: dict, inp: dict
@@ -389,8 +412,8 @@ def finish(problem: Problem, effects: tuple[str, ...], theta: dict[str, float],
     X = columns(problem, effects, theta, full=True)[0]
     # a bounded amplitude held at its bound (a play operator's weight at 0) is not in use
     fit = Fit(effects, theta, beta, labels, problem.base.fixed + X @ beta, float(r @ r),
-              int(np.count_nonzero(beta)) + n_shapes, columns=Xf)
-    fit.cv_mse = _cv_mse(Xf, problem.y, lo, hi, problem.folds)
+              int(np.count_nonzero(beta)) + n_shapes, columns=Xf,
+              cv_inputs=(problem.y, lo, hi, problem.folds))
     return fit
 
 
