@@ -7,10 +7,10 @@ spread, a loop's or play's amplitude at zero). The rows are folded into the colu
 triangular factor once (X = QR: ‖Xb − y‖² = ‖Rb − Qᵀy‖² + const, R and Qᵀy read from the
 factor of [X y]) and the bounded problem is solved on p × p by the active-set method of
 Stark and Parker, written here in a few lines because scipy's general
-``lsq_linear(method="bvls")`` spends most of its time in per-call overhead at this size. The objective is strictly convex when R has full rank, so
-the solution (the point that satisfies the Karush–Kuhn–Tucker conditions) is unique; a
-rank-deficient R, or a problem the method does not settle in ``MAX_ROUNDS``, goes to
-scipy's solver.
+``lsq_linear(method="bvls")`` spends most of its time in per-call overhead at this size.
+The objective is strictly convex when R has full rank, so the solution (the point that
+satisfies the Karush–Kuhn–Tucker conditions) is unique; a rank-deficient R, or a problem
+the method does not settle in ``MAX_ROUNDS``, goes to scipy's solver.
 
 References
 ----------
