@@ -38,16 +38,14 @@ KKT_TOLERANCE = 1e-12
 def solve(X: np.ndarray, y: np.ndarray, lower: np.ndarray, upper: np.ndarray) -> np.ndarray:
     """b minimising ‖X·b − y‖² with ``lower`` ≤ b ≤ ``upper`` (±inf where unbounded), on
     columns scaled to unit RMS."""
-    norm = np.sqrt(np.einsum("ij,ij->j", X, X) / max(len(X), 1))
-    norm[norm == 0] = 1.0
+    norm = column_rms(X)
     Xs = X / norm
     lo, hi = lower * norm, upper * norm
     p = Xs.shape[1]
     # the factor of [X y]: its first p columns are R and Qᵀy, without forming Q
     Ry = np.linalg.qr(np.column_stack([Xs, y]), mode="r")
     R, c = Ry[:p, :p], Ry[:p, p]
-    diagonal = np.abs(np.diag(R))
-    if R.shape[0] == p and diagonal.size and diagonal.min() > RANK_TOLERANCE * diagonal.max():
+    if p and R.shape[0] == p and full_rank(R):
         beta = _active_set(R, c, lo, hi)
         if beta is not None:  # clipped: a bound scaled and back can be a rounding off
             return np.clip(beta / norm, lower, upper)
@@ -55,6 +53,20 @@ def solve(X: np.ndarray, y: np.ndarray, lower: np.ndarray, upper: np.ndarray) ->
     if np.any(beta < lo) or np.any(beta > hi):
         beta = lsq_linear(R, c, bounds=(lo, hi), method="bvls").x
     return np.clip(beta / norm, lower, upper)
+
+
+def column_rms(X: np.ndarray) -> np.ndarray:
+    """RMS of each column, 1 for a column of zeros (the scale the columns are solved at)."""
+    norm = np.sqrt(np.einsum("ij,ij->j", X, X) / max(len(X), 1))
+    norm[norm == 0] = 1.0
+    return norm
+
+
+def full_rank(R: np.ndarray) -> bool:
+    """The triangular factor's columns are independent: no diagonal element below
+    ``RANK_TOLERANCE`` of the largest (an empty factor has none to depend)."""
+    diagonal = np.abs(np.diag(R))
+    return not diagonal.size or diagonal.min() > RANK_TOLERANCE * diagonal.max()
 
 
 def _active_set(R: np.ndarray, c: np.ndarray, lo: np.ndarray, hi: np.ndarray

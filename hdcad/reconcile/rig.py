@@ -144,8 +144,7 @@ def columns(name: str, kind: str, inputs: dict[str, np.ndarray], step_position: 
     rows, with its nonlinear parameters ``theta`` (none when the effect acts only through
     the baseline in that kind)."""
     u = inputs["record_position"]
-    linear = [p.name for p in _in_kind(name, kind, RIG_EFFECTS[name].parameters) if p.linear]
-    if not linear:
+    if not any(p.linear for p in _in_kind(name, kind, RIG_EFFECTS[name].parameters)):
         return [], np.zeros((len(u), 0))
     if name == "thermal_drift":
         return ["d1", "d2"], np.column_stack([u, warm_up(u, theta["tau"])])

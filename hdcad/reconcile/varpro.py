@@ -24,7 +24,7 @@ from __future__ import annotations
 import numpy as np
 from scipy.linalg import solve_triangular
 
-from .bounded import RANK_TOLERANCE
+from .bounded import column_rms, full_rank
 
 # step of the shapes' forward differences, relative to max(1, |x|) (x a shape or its
 # logarithm), as least_squares' diff_step
@@ -63,11 +63,9 @@ def projected_jacobian(y: np.ndarray, model: dict, x: np.ndarray, lo: np.ndarray
     bounded solve per step. None when the free columns are (nearly) collinear."""
     Xf, beta, free = model["Xf"], model["beta"], model["free"]
     r = y - Xf @ beta
-    norm = np.sqrt(np.einsum("ij,ij->j", Xf[:, free], Xf[:, free]) / len(y))
-    norm[norm == 0] = 1.0
+    norm = column_rms(Xf[:, free])
     Q, R = np.linalg.qr(Xf[:, free] / norm)
-    diagonal = np.abs(np.diag(R))
-    if diagonal.size and diagonal.min() <= RANK_TOLERANCE * diagonal.max():
+    if not full_rank(R):
         return None
     J = np.empty((len(y), len(x)))
     for k, (xk, h) in enumerate(steps(x, lo, hi)):
@@ -77,6 +75,6 @@ def projected_jacobian(y: np.ndarray, model: dict, x: np.ndarray, lo: np.ndarray
         dX = (dX - Xf) / h
         d = dX @ beta
         J[:, k] = -(d - Q @ (Q.T @ d))
-        if diagonal.size:
+        if free.any():
             J[:, k] -= Q @ solve_triangular(R, (dX[:, free].T @ r) / norm, trans="T")
     return J
