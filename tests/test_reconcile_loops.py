@@ -57,6 +57,32 @@ def test_the_everett_sum_is_the_mean_of_the_relays_it_stands_for():
     assert -z == pytest.approx(_relays_by_brute_force(torque), abs=0.02)
 
 
+def test_the_memory_terms_are_exact_for_a_finite_set_of_relays():
+    """The Everett terms (the memory followed run by run, a noisy torque's short runs one
+    sample at a time) against 300 relays switched sample by sample from the same
+    demagnetised state: for a finite set E(α, β) is the weight of the relays inside the
+    triangle, so the sum must agree to rounding. The history has long runs, plateaus, and
+    a dither of one- and two-sample runs."""
+    rng = np.random.default_rng(3)
+    a, b = rng.uniform(-1.5 * T0, 1.5 * T0, (2, 300))
+    alpha, beta, weight = np.maximum(a, b), np.minimum(a, b), rng.uniform(0.5, 1.5, 300)
+    dither = 0.4 * T0 + rng.normal(0.0, 0.02 * T0, 200)
+    torque = np.concatenate([_history(1.0, -0.6, 0.3), np.full(5, 0.3 * T0), dither,
+                             _history(-1.2, 0.9, points=7), np.repeat(dither[:40], 2)])
+    top = preisach.LIMIT * T0
+    prehistory = [(-1) ** k * top * preisach.DECAY ** k for k in range(1, 200)
+                  if top * preisach.DECAY ** k > preisach.DEMAG_END * T0] + [0.0]
+    state, relays = -np.ones(300), []
+    for u in np.concatenate([prehistory, torque]):
+        state[u >= alpha] = 1.0
+        state[u <= beta] = -1.0
+        relays.append(weight @ state)
+    rows, alphas, betas, coefs = preisach.everett_terms(torque, T0)
+    inside = (betas[:, None] <= beta) & (alpha <= alphas[:, None])
+    output = np.bincount(rows, coefs * (inside @ weight), len(torque)) - weight.sum()
+    assert output == pytest.approx(relays[len(prehistory):], abs=1e-9)
+
+
 def test_a_minor_loop_returns_to_its_turning_point_and_is_wiped_out_by_a_larger_one():
     """Return-point memory: after 0.2 → 0.6 → 0.2 the output is back where it left 0.2;
     wiping out: once the torque passes the earlier maximum, the output is that of the

@@ -54,7 +54,7 @@ def read_data(kind: str, path) -> dict[str, np.ndarray]:
         reader = csv.reader(io.StringIO(text, newline=""))
         header = [h.strip() for h in next(reader, [])]
         columns = _column_indices(kind, header, path.name)
-        rows = [row for row in reader if any(cell.strip() for cell in row)]
+        rows = [row for row in reader if "".join(row).strip()]
     except csv.Error as exc:
         raise InputError("DATA.csv", f"{path.name} is not a CSV text file ({exc})") from None
     return validate_data(kind, _parse(rows, columns, path.name))
@@ -72,6 +72,10 @@ def _column_indices(kind: str, header: list[str], name: str) -> dict[str, int]:
 
 
 def _parse(rows: list[list[str]], columns: dict[str, int], name: str) -> dict[str, np.ndarray]:
+    try:  # numpy reads the cells as float() does; a bad cell is found row by row below
+        return {c: np.array([row[i] for row in rows], dtype=float) for c, i in columns.items()}
+    except (ValueError, IndexError):
+        pass
     out = {c: np.empty(len(rows)) for c in columns}
     for line, row in enumerate(rows, start=2):  # line 1 is the header
         for column, index in columns.items():

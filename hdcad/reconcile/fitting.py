@@ -221,7 +221,7 @@ def columns(problem: Problem, effects: tuple[str, ...], theta: dict[str, float],
     (``full``) or on the fitted rows."""
     base = problem.base
     rows = slice(None) if full else problem.rows
-    inp = {k: v[rows] for k, v in base.inputs.items() if np.ndim(v) == 1}
+    inp = _inputs_on(problem, full)
     branches = problem.branches if full else problem.fit_branches
     free = base.free_columns(theta, rows)
     n = free.shape[0]
@@ -287,6 +287,18 @@ def columns(problem: Problem, effects: tuple[str, ...], theta: dict[str, float],
     if factor is not None:  # η = η0·Ke(α)·F(t): the effects scale the whole efficiency
         X = X * factor[:, None]
     return X, labels, np.array(lower), np.array(upper)
+
+
+def _inputs_on(problem: Problem, full: bool) -> dict[str, np.ndarray]:
+    """The record's input columns on every row or on the fitted rows (these kept until
+    set_rows clears the cache: read only)."""
+    inputs = {k: v for k, v in problem.base.inputs.items() if np.ndim(v) == 1}
+    if full:
+        return inputs
+    key = ("inputs", id(problem.rows))
+    if key not in problem.cache:
+        problem.cache[key] = {k: v[problem.rows] for k, v in inputs.items()}
+    return problem.cache[key]
 
 
 def _hysteresis_state(problem: Problem, torque: np.ndarray, th: dict, branches, rows

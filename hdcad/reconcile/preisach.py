@@ -65,50 +65,122 @@ def everett(alpha: np.ndarray, beta: np.ndarray, width: float, spread: float,
 def everett_terms(torque_Nm: np.ndarray, T0: float
                   ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """(sample, α, β, coefficient): the Everett terms of every sample's output, the
-    constant −E(α0, β0) aside, along the history demagnetised → ``torque_Nm``."""
+    constant −E(α0, β0) aside, along the history demagnetised → ``torque_Nm``.
+
+    The memory changes only at a turn and where the torque passes a stored extremum, so it
+    is followed run by run (a run: the torque moving one way); a long run's samples read
+    their depth in the memory by bisection, a short one's (a noisy torque's) one by one."""
     top = LIMIT * T0
     demag = [(-1) ** k * top * DECAY ** k for k in range(1, 200)
              if top * DECAY ** k > DEMAG_END * T0]
+    u = np.concatenate([demag, [0.0], np.asarray(torque_Nm, dtype=float)])
+    first = len(demag) + 1                      # the record's first sample in u
+    direction = _directions(np.diff(u, prepend=-top))
+    turns = np.flatnonzero(np.diff(np.concatenate([[1.0], direction])) != 0)
+    bounds = np.unique(np.concatenate([[0], turns, [len(u)]]))
     maxima, minima = [], [-top]   # dominant extrema; minima[0] = β0 (negative saturation)
-    rising, previous = True, -top
-    rows, alphas, betas, coefs = [], [], [], []
-    for i, u in enumerate(np.concatenate([demag, [0.0], torque_Nm])):
-        u = float(u)
-        if u > previous:
-            if not rising:
-                minima.append(previous)
-                rising = True
-            while maxima and maxima[-1] <= u:   # wiped out: the pair below it goes too
-                maxima.pop()
-                if len(minima) > 1:
-                    minima.pop()
-        elif u < previous:
-            if rising:
-                maxima.append(previous)
-                rising = False
-            while len(minima) > 1 and minima[-1] >= u:
+    pieces, scalars = [], ([], [], [], [])
+    turned = set(turns.tolist())
+    values, bounds = u.tolist(), bounds.tolist()
+    for s, e in zip(bounds[:-1], bounds[1:]):
+        rising = bool(direction[s] > 0)
+        if s in turned:
+            (minima if rising else maxima).append(values[s - 1] if s else -top)
+        if e - s > _SHORT_RUN:
+            if scalars[0]:
+                pieces.append(tuple(np.array(x) for x in scalars))
+                scalars = ([], [], [], [])
+            pieces.append(_run_terms(u, s, e, first, rising, maxima, minima))
+        else:
+            for i in range(s, e):
+                _sample_terms(values[i], i - first, rising, maxima, minima, scalars)
+    if scalars[0]:
+        pieces.append(tuple(np.array(x) for x in scalars))
+    return tuple(np.concatenate(p) for p in zip(*pieces))
+
+
+# runs of at most this many samples are followed one sample at a time
+_SHORT_RUN = 16
+
+
+def _directions(step: np.ndarray) -> np.ndarray:
+    """+1 / −1: the sign of the last non-zero step up to each sample (rising at the start)."""
+    moved = np.flatnonzero(step)
+    if not moved.size:
+        return np.ones_like(step)
+    last = np.searchsorted(moved, np.arange(len(step)), side="right") - 1
+    out = np.sign(step[moved[np.maximum(last, 0)]])
+    out[last < 0] = 1.0
+    return out
+
+
+def _sample_terms(u: float, sample: int, rising: bool, maxima: list, minima: list,
+                  out: tuple) -> None:
+    """One sample of a run: the extrema it passes wiped out, its terms appended to ``out``
+    (a sample of the demagnetising prehistory, ``sample`` < 0, adds none)."""
+    if rising:
+        while maxima and maxima[-1] <= u:   # wiped out: the pair below it goes too
+            maxima.pop()
+            if len(minima) > 1:
                 minima.pop()
-                maxima.pop()
-        previous = u
-        sample = i - len(demag) - 1
-        if sample < 0:
-            continue
-        for k in range(len(maxima) if rising else len(maxima) - 1):  # the closed pairs
-            rows += [sample, sample]
-            alphas += [maxima[k], maxima[k]]
-            betas += [minima[k], minima[k + 1]]
-            coefs += [2.0, -2.0]
-        if rising:                           # the rising branch from the last minimum
-            rows.append(sample)
-            alphas.append(u)
-            betas.append(minima[-1])
-            coefs.append(2.0)
-        else:                                # the falling branch from the last maximum
-            rows += [sample, sample]
-            alphas += [maxima[-1], maxima[-1]]
-            betas += [minima[-1], u]
-            coefs += [2.0, -2.0]
-    return (np.array(rows), np.array(alphas), np.array(betas), np.array(coefs))
+    else:
+        while len(minima) > 1 and minima[-1] >= u:
+            minima.pop()
+            maxima.pop()
+    if sample < 0:
+        return
+    rows, alphas, betas, coefs = out
+    for k in range(len(maxima) if rising else len(maxima) - 1):  # the closed pairs
+        rows += [sample, sample]
+        alphas += [maxima[k], maxima[k]]
+        betas += [minima[k], minima[k + 1]]
+        coefs += [2.0, -2.0]
+    if rising:                           # the rising branch from the last minimum
+        rows.append(sample)
+        alphas.append(u)
+        betas.append(minima[-1])
+        coefs.append(2.0)
+    else:                                # the falling branch from the last maximum
+        rows += [sample, sample]
+        alphas += [maxima[-1], maxima[-1]]
+        betas += [minima[-1], u]
+        coefs += [2.0, -2.0]
+
+
+def _run_terms(u: np.ndarray, s: int, e: int, first: int, rising: bool, maxima: list,
+               minima: list) -> tuple:
+    """The terms of the samples s…e−1 of one run, in the order of :func:`_sample_terms`; the
+    memory left as after the run's last sample. The maxima decrease and the minima increase
+    up the memory, so a rising sample keeps the maxima above it, a falling one the minima
+    below it."""
+    seg = u[s:e]
+    mx, mn = np.array(maxima), np.array(minima)
+    if rising:
+        depth = len(mx) - np.searchsorted(mx[::-1], seg, side="right")
+    else:
+        depth = np.searchsorted(mn[1:], seg, side="left") + 1
+    last = int(depth[-1])
+    del maxima[last:]
+    del minima[last + int(rising):]
+    lo = max(s, first) - s
+    seg, depth = seg[lo:], depth[lo:]
+    sample = np.arange(s + lo, e) - first
+    closed = depth if rising else depth - 1          # closed pairs of each sample
+    count = 2 * closed + (1 if rising else 2)
+    start = np.cumsum(count) - count
+    alpha, beta, coef = (np.empty(int(count.sum())) for _ in range(3))
+    owner = np.repeat(np.arange(len(seg)), closed)
+    k = np.arange(len(owner)) - np.repeat(np.cumsum(closed) - closed, closed)
+    at = start[owner] + 2 * k
+    alpha[at], beta[at], coef[at] = mx[k], mn[k], 2.0
+    alpha[at + 1], beta[at + 1], coef[at + 1] = mx[k], mn[k + 1], -2.0
+    end = start + 2 * closed
+    if rising:                           # the rising branch from the last minimum
+        alpha[end], beta[end], coef[end] = seg, mn[depth], 2.0
+    else:                                # the falling branch from the last maximum
+        alpha[end], beta[end], coef[end] = mx[depth - 1], mn[depth - 1], 2.0
+        alpha[end + 1], beta[end + 1], coef[end + 1] = mx[depth - 1], seg, -2.0
+    return np.repeat(sample, count), alpha, beta, coef
 
 
 def term_matrix(terms, n: int) -> tuple[sparse.csr_matrix, np.ndarray, np.ndarray]:
