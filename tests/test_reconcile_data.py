@@ -339,3 +339,16 @@ def test_an_input_angle_in_revolutions_is_converted():
     assert fix["column"] == "input_angle_rad" and "revolutions" in fix["reading"]
     assert fix["factor"] == pytest.approx(2 * math.pi, rel=1e-12)
     assert result["missing_effects"] == []
+
+
+def test_an_input_angle_in_degrees_is_converted():
+    """Suite L's transmission record with the input angle in degrees was refused as bad
+    input at its held-out score (the output turned 0.0175 × input / ratio, 1/57.3)."""
+    from truth_runs import bench, named_case
+    case = named_case("l", "l-transmission-decoy-indeg-000", 11, per_cell=1)
+    result = bench.reconcile_case(case)
+    (fix,) = result["measurement_effects"]
+    assert fix["column"] == "input_angle_rad" and "degrees" in fix["reading"]
+    assert fix["factor"] == pytest.approx(math.pi / 180, rel=1e-12)
+    assert result["missing_effects"] == []
+    assert result["rmse_after"] <= 1.2 * case.noise_rms

@@ -238,6 +238,20 @@ def test_temperature_factor_is_one_at_reference_and_rises_with_warm_grease():
     assert f[3] == pytest.approx(1 / (1 - 0.2))   # viscous loss gone entirely
 
 
+def test_a_band_law_steps_over_its_band_and_is_reynolds_when_wide():
+    """ln g changes by 4·b·w across the band, with slope −b at its centre, is flat well
+    outside it, and tends to Reynolds' exp(−b·Δt) as the band widens (σ(x) ≈ ½ + x/4)."""
+    t = np.array([-40.0, 0.0, 20.0, 30.0, 40.0, 120.0])
+    g = fx.band_ratio(t, 0.05, 20.0, (30.0, 3.0))
+    assert g[2] == 1.0
+    assert np.log(g[0] / g[-1]) == pytest.approx(4 * 0.05 * 3.0, rel=1e-6)
+    h = 1e-4
+    slope = np.log(fx.band_ratio(np.array([30.0 + h, 30.0 - h]), 0.05, 20.0, (30.0, 3.0)))
+    assert (slope[0] - slope[1]) / (2 * h) == pytest.approx(-0.05, rel=1e-6)
+    wide = fx.band_ratio(t, 0.05, 20.0, (30.0, 1e6))
+    assert wide == pytest.approx(fx.viscosity_ratio(t, 0.05, 20.0), rel=1e-6)
+
+
 # --------------------------------------------------------------------------- noise
 def test_noise_estimate_ignores_a_smooth_signal_and_sees_coloured_noise():
     rng = np.random.default_rng(1)

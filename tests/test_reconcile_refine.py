@@ -57,6 +57,24 @@ def test_a_law_referred_to_one_point_is_followed_to_the_noise(name):
     assert any(note.startswith("viscosity law:") for note in result["notes"])
 
 
+@pytest.mark.parametrize("suite,name,keeps_viscosity", [
+    # an EP additive's film that activates over a few kelvin (suite L; 2.73σ left at its
+    # held-out score with the viscosity laws alone)
+    ("l", "l-efficiency-single-temp-ep-000", False),
+    # Andrade viscous drag: a viscosity law, no band
+    ("b", "b-efficiency-single-temperature_dependence-viscous-000", True),
+])
+def test_a_loss_that_steps_over_a_band_of_temperature_is_followed(suite, name,
+                                                                  keeps_viscosity):
+    """A loss that changes over a band of temperature takes the band's form in place of the
+    viscosity law when BIC prefers it, and a viscous law keeps its viscosity law."""
+    case, result = case_run(suite, name)
+    assert result["missing_effects"] == ["temperature_dependence"]
+    assert result["rmse_after"] <= 1.2 * case.noise_rms
+    banded = any("band of temperature" in note for note in result["notes"])
+    assert banded is not keeps_viscosity
+
+
 def test_an_outlier_hidden_by_the_effects_is_left_out_of_the_named_model():
     """Suite C's drag-torque low-load single (seed 11, 2 per cell) holds one gross outlier,
     9.8× its noise. On the baseline's residual the efficiency drop, in the grid's random run

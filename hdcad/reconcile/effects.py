@@ -323,10 +323,39 @@ def viscosity_ratio(temperature_C: np.ndarray, slope_per_K: float, reference_C: 
     return np.exp(-slope_per_K * dt / (1.0 + dt / (reference_C + law_C)))
 
 
+def band_ratio(temperature_C: np.ndarray, slope_per_K: float, reference_C: float,
+               band: tuple[float, float]) -> np.ndarray:
+    """g(t) [-] of a loss that changes over a band of temperature (centre t_c [°C], width
+    w [K]) and not outside it: ln g = −4·b·w·[σ((t − t_c)/w) − σ((t_ref − t_c)/w)], σ the
+    logistic, so the slope is −b at the centre and Reynolds' exp(−b·Δt) is the limit
+    w → ∞. An extreme-pressure or anti-wear additive forms its film where the contacts
+    pass an activation temperature; a grease changes consistency over a band.
+
+    References: Spikes, H. (2004) "The history and mechanisms of ZDDP", Tribology Letters
+    17(3): 469-489 (thermally activated tribofilm formation).
+    """
+    centre, width = band
+    t = np.asarray(temperature_C, dtype=float)
+    step = 0.5 * (1.0 + np.tanh(0.5 * (t - centre) / width))  # σ, written without overflow
+    at_ref = 0.5 * (1.0 + math.tanh(0.5 * (reference_C - centre) / width))
+    return np.exp(-4.0 * slope_per_K * width * (step - at_ref))
+
+
+def temperature_ratio(temperature_C: np.ndarray, slope_per_K: float, reference_C: float,
+                      law_C: float = math.inf, band: tuple[float, float] | None = None
+                      ) -> np.ndarray:
+    """g(t) of the temperature law: a band's (:func:`band_ratio`) when one is given, else
+    the viscosity law's (:func:`viscosity_ratio`)."""
+    if band is not None:
+        return band_ratio(temperature_C, slope_per_K, reference_C, band)
+    return viscosity_ratio(temperature_C, slope_per_K, reference_C, law_C)
+
+
 def temperature_factor(temperature_C: np.ndarray, share: float, slope_per_K: float,
                        reference_C: float, speed_rpm: np.ndarray | None = None,
                        s: float = 0.0, boundary: float = 0.0,
-                       law_C: float = math.inf, speed_loss: float = 0.0) -> np.ndarray:
+                       law_C: float = math.inf, speed_loss: float = 0.0,
+                       band: tuple[float, float] | None = None) -> np.ndarray:
     """Efficiency relative to that at ``reference_C`` [-] when part of the loss is viscous.
 
     F = 1 / (1 + a·(g − 1)·v + c·(1/g − 1)/v), g the viscosity relative to t_ref
@@ -338,12 +367,13 @@ def temperature_factor(temperature_C: np.ndarray, share: float, slope_per_K: flo
     share of boundary friction that grows as the film (viscosity × speed) thins, so that
     efficiency can peak at a middle temperature (Stribeck). F = 1 at t_ref at every speed,
     unless the viscous loss at t_ref grows with speed too: + u·(v − 1), u = ``speed_loss``
-    (the law's two references, temperature and speed, then meet at one point only).
+    (the law's two references, temperature and speed, then meet at one point only). With a
+    ``band`` the loss changes over that band of temperature only (:func:`band_ratio`).
     Seed 000 p.023 lists temperature and input speed among the factors of efficiency.
 
     References: Stribeck, R. (1902) Z. VDI 46; Hersey, M. D. (1914) J. Wash. Acad. Sci. 4.
     """
-    g = viscosity_ratio(temperature_C, slope_per_K, reference_C, law_C)
+    g = temperature_ratio(temperature_C, slope_per_K, reference_C, law_C, band)
     speed = 1.0
     if speed_rpm is not None and s != 0.0:
         speed = (np.asarray(speed_rpm, dtype=float) / KE_REFERENCE_SPEED_RPM) ** s

@@ -80,6 +80,10 @@ class Problem:
     # constant C [°C] of the viscosity–temperature law (effects.VISCOSITY_LAWS_C): Reynolds'
     # while effects are named, the law that fits best once they are (refine.refine_viscosity)
     viscosity_C: float = math.inf
+    # (centre [°C], width [K]) of a band of temperature over which the loss changes
+    # (effects.band_ratio) in place of the viscosity law: None while effects are named, tried
+    # once they are (refine.refine_viscosity)
+    temperature_band: tuple[float, float] | None = None
     # share u of the viscous loss at t_ref that grows with speed: 0 while effects are named,
     # fitted once they are (refine.refine_viscosity)
     speed_loss: float = 0.0
@@ -281,7 +285,7 @@ def columns(problem: Problem, effects: tuple[str, ...], theta: dict[str, float],
             f = fx.temperature_factor(inp["temperature_C"], th["a"], th["b"],
                                       fx.REFERENCE_TEMPERATURE_C, inp["input_speed_rpm"],
                                       th["s"], th["boundary"], problem.viscosity_C,
-                                      problem.speed_loss)
+                                      problem.speed_loss, problem.temperature_band)
             factor = f if factor is None else factor * f
     X = np.column_stack(cols)
     if factor is not None:  # η = η0·Ke(α)·F(t): the effects scale the whole efficiency
@@ -335,9 +339,10 @@ def _viscosity(problem: Problem, effects: tuple[str, ...], theta: dict, inp: dic
     grows with viscosity."""
     if not problem.drag_viscosity_exponent or "temperature_dependence" not in effects:
         return None
-    return fx.viscosity_ratio(inp["temperature_C"],
-                              theta[key_of("temperature_dependence", "b")],
-                              fx.REFERENCE_TEMPERATURE_C, problem.viscosity_C)
+    return fx.temperature_ratio(inp["temperature_C"],
+                                theta[key_of("temperature_dependence", "b")],
+                                fx.REFERENCE_TEMPERATURE_C, problem.viscosity_C,
+                                problem.temperature_band)
 
 
 # --------------------------------------------------------------------------- fitting

@@ -13,6 +13,8 @@ from __future__ import annotations
 import math
 from dataclasses import replace
 
+import numpy as np
+
 from scipy.optimize import minimize_scalar
 
 from . import effects as fx
@@ -28,6 +30,10 @@ _SPEED_LOSS_BOUNDS = (-0.5, 0.9)  # as the viscous share a of the temperature la
 # rolling bearing's no-load torque ∝ ν^(2/3), Palmgren)
 _DRAG_VISCOSITY_BOUNDS = (0.0, 2.0)
 _PLAY_HOLD_BOUNDS = (0.0, 0.3)  # holding torque of a play, as a share of the largest torque
+# a band of temperature over which a loss changes: centres between the temperatures tested
+# (at most this many), widths [K] from a step between two of them to a gradual change
+_BAND_CENTRES = 8
+_BAND_WIDTHS_K = (2.0, 6.0, 18.0)
 
 
 def refine_te_order(problem: Problem, fit: Fit) -> Fit:
@@ -131,7 +137,57 @@ def refine_viscosity(problem: Problem, fit: Fit) -> Fit:
     best, law = fit_viscosity_law(problem, fit)
     problem.notes.append(f"viscosity law: {law} (C = {problem.viscosity_C:g} °C), the best "
                          f"of {', '.join(fx.VISCOSITY_LAWS_C)} on these data")
-    return _viscous_drag(problem, _speed_loss(problem, best))
+    return _viscous_drag(problem, _speed_loss(problem, _temperature_band(problem, best)))
+
+
+def _temperature_band(problem: Problem, fit: Fit) -> Fit:
+    """The temperature law as a loss that changes over a band of temperature
+    (:func:`.effects.band_ratio`, its centre and width two parameters more) in place of the
+    viscosity law, kept when BIC with the effective sample size prefers it: an additive
+    that activates or a grease that changes consistency steps the efficiency between two
+    temperatures where a viscosity law bends it smoothly over all of them. Centres between
+    the temperatures tested, a few widths; not tried when the residual's means over the
+    test's temperatures and speeds hold too little to pay for the two parameters."""
+    t = problem.base.inputs["temperature_C"][problem.rows]
+    levels = np.unique(np.round(t, 1))
+    if len(levels) < 3:
+        return fit
+    n_eff = effective_n(problem, fit.residual(problem))
+    if _cell_share(problem, fit) < 1.0 - math.exp(-2.0 * math.log(n_eff) / n_eff):
+        return fit
+    if len(levels) > _BAND_CENTRES + 1:
+        levels = np.quantile(t, np.linspace(0.0, 1.0, _BAND_CENTRES + 1))
+    trials = {}
+    for centre in 0.5 * (levels[1:] + levels[:-1]):
+        for width in _BAND_WIDTHS_K:
+            problem.temperature_band = (float(centre), width)
+            trials[problem.temperature_band] = fit_model(problem, fit.effects, fit.theta)
+    band = min(trials, key=lambda b: trials[b].rss)
+    banded = trials[band]
+    n_eff = effective_n(problem, banded.residual(problem))
+    if bic_best({False: (fit.rss, 0), True: (banded.rss, 2)}, n_eff) is False:
+        problem.temperature_band = None
+        return fit
+    problem.temperature_band = band
+    problem.notes.append(
+        f"temperature law: the loss changes over a band of temperature about {band[0]:.3g} °C "
+        f"(width {band[1]:g} K; an additive's activation, a grease's consistency) in place "
+        "of the viscosity law (BIC)")
+    return replace(banded, n_params=banded.n_params + 2)
+
+
+def _cell_share(problem: Problem, fit: Fit) -> float:
+    """Share of the residual sum of squares held by its means over the cells of the test's
+    grid (temperature × input speed) beyond what white noise puts there: what a law in
+    temperature and speed can take."""
+    inputs = problem.base.inputs
+    cells = np.column_stack([np.round(inputs[c][problem.rows], 1)
+                             for c in ("temperature_C", "input_speed_rpm")])
+    _, cell = np.unique(cells, axis=0, return_inverse=True)
+    r = fit.residual(problem)
+    sums, counts = np.bincount(cell.ravel(), r), np.bincount(cell.ravel())
+    # white noise alone puts one row's worth of variance in each cell's mean
+    return float(np.sum(sums ** 2 / counts) / max(r @ r, 1e-300)) - len(counts) / len(r)
 
 
 def fit_viscosity_law(problem: Problem, fit: Fit) -> tuple[Fit, str]:

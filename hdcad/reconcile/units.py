@@ -1,8 +1,8 @@
 """Channels in the wrong unit: found before any fit, corrected and reported as a rig finding.
 
 A channel recorded in the wrong unit (degrees, arc-minutes or arc-seconds for radians, kN·m
-or kgf·m for N·m, an input angle in revolutions, efficiency as a fraction) scales the data by
-57.3, 3438, 206265, 1000, 9.81, 6.28 or 0.01 against the catalog: no physical effect does that. The catalog's stiffness is an average
+or kgf·m for N·m, an input angle in revolutions or degrees, efficiency as a fraction) scales
+the data by 57.3, 3438, 206265, 1000, 9.81, 6.28, 1/57.3 or 0.01 against the catalog: no physical effect does that. The catalog's stiffness is an average
 (seed 000 p.020) and real gears scatter by tens of percent, hysteresis and play add to the
 twist at small torque, so only a factor beyond
 ``IMPLAUSIBLE`` (5) is taken as a unit error. When the factor is one of the usual unit
@@ -72,7 +72,9 @@ TORSION_FIXES = _angle_fixes("twist_rad", "twist") + (
     ("twist_rad", 1e-3, "twist in mrad instead of rad", 1000.0))
 TRANSMISSION_FIXES = _angle_fixes("output_angle_rad", "output angle") + (
     ("input_angle_rad", 2 * math.pi, "input angle in revolutions instead of radians",
-     2 * math.pi),)
+     2 * math.pi),
+    ("input_angle_rad", 1 / DEG_PER_RAD, "input angle in degrees instead of radians",
+     1 / DEG_PER_RAD))
 
 
 def _rms(values: np.ndarray) -> float:
