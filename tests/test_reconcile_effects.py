@@ -16,6 +16,7 @@ from hdcad.checks.run import stiffness_curve
 from hdcad.checks.stiffness import natural_frequency, resonant_input_speed
 from hdcad.models import resolve
 from hdcad.reconcile import EFFECT_NAMES, EFFECTS, KINDS
+from hdcad.reconcile import efficiency_laws as laws
 from hdcad.reconcile import effects as fx
 from hdcad.reconcile import joint
 from hdcad.reconcile.baseline import catalog_twist
@@ -210,7 +211,7 @@ def test_low_load_factor_meets_the_catalog_point_and_rule():
     """Graph 023-1: Ke(0.58) = 0.93 (CSF-20-80 example); Ke = 1 at and above rated torque.
     With q = 1, c solves 0.58·(1 + c)/(0.58 + c) = 0.93 → c = 0.58·0.07/0.35."""
     c = 0.58 * 0.07 / 0.35
-    ke = fx.low_load_factor(np.array([0.1, 0.3, 0.58, 1.0, 1.3]), c, 1.0)
+    ke = laws.low_load_factor(np.array([0.1, 0.3, 0.58, 1.0, 1.3]), c, 1.0)
     assert ke[2] == pytest.approx(0.93, abs=1e-12)
     assert ke[3] == 1.0 and ke[4] == 1.0
     assert np.all(np.diff(ke[:4]) > 0)
@@ -223,16 +224,16 @@ def test_low_load_drop_grows_with_speed_and_keeps_the_catalog_point_at_1000_rpm(
     c = 0.58 * 0.07 / 0.35
     alpha = np.full(4, 0.58)
     speed = np.array([500.0, 1000.0, 3000.0, 3000.0])
-    ke = fx.low_load_factor(alpha, c, 1.0, speed, 0.7)
+    ke = laws.low_load_factor(alpha, c, 1.0, speed, 0.7)
     assert ke[1] == pytest.approx(0.93, abs=1e-12)
     assert ke[0] > ke[1] > ke[2]
-    assert fx.low_load_factor(alpha, c, 1.0, speed, 0.0)[3] == pytest.approx(0.93, abs=1e-12)
-    assert fx.low_load_factor(np.array([1.0]), c, 1.0, np.array([3000.0]), 0.7)[0] == 1.0
+    assert laws.low_load_factor(alpha, c, 1.0, speed, 0.0)[3] == pytest.approx(0.93, abs=1e-12)
+    assert laws.low_load_factor(np.array([1.0]), c, 1.0, np.array([3000.0]), 0.7)[0] == 1.0
 
 
 def test_temperature_factor_is_one_at_reference_and_rises_with_warm_grease():
     t = np.array([0.0, 20.0, 40.0, 1e4])
-    f = fx.temperature_factor(t, 0.2, 0.03, 20.0)
+    f = laws.temperature_factor(t, 0.2, 0.03, 20.0)
     assert f[1] == 1.0
     assert f[0] < f[1] < f[2]
     assert f[3] == pytest.approx(1 / (1 - 0.2))   # viscous loss gone entirely
@@ -242,14 +243,14 @@ def test_a_band_law_steps_over_its_band_and_is_reynolds_when_wide():
     """ln g changes by 4·b·w across the band, with slope −b at its centre, is flat well
     outside it, and tends to Reynolds' exp(−b·Δt) as the band widens (σ(x) ≈ ½ + x/4)."""
     t = np.array([-40.0, 0.0, 20.0, 30.0, 40.0, 120.0])
-    g = fx.band_ratio(t, 0.05, 20.0, (30.0, 3.0))
+    g = laws.band_ratio(t, 0.05, 20.0, (30.0, 3.0))
     assert g[2] == 1.0
     assert np.log(g[0] / g[-1]) == pytest.approx(4 * 0.05 * 3.0, rel=1e-6)
     h = 1e-4
-    slope = np.log(fx.band_ratio(np.array([30.0 + h, 30.0 - h]), 0.05, 20.0, (30.0, 3.0)))
+    slope = np.log(laws.band_ratio(np.array([30.0 + h, 30.0 - h]), 0.05, 20.0, (30.0, 3.0)))
     assert (slope[0] - slope[1]) / (2 * h) == pytest.approx(-0.05, rel=1e-6)
-    wide = fx.band_ratio(t, 0.05, 20.0, (30.0, 1e6))
-    assert wide == pytest.approx(fx.viscosity_ratio(t, 0.05, 20.0), rel=1e-6)
+    wide = laws.band_ratio(t, 0.05, 20.0, (30.0, 1e6))
+    assert wide == pytest.approx(laws.viscosity_ratio(t, 0.05, 20.0), rel=1e-6)
 
 
 # --------------------------------------------------------------------------- noise

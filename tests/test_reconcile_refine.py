@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 from truth_runs import bench, case_run, named_case
 
-from hdcad.reconcile import effects as fx
+from hdcad.reconcile import efficiency_laws as laws
 
 
 def test_viscosity_laws_are_andrade_and_vogel_with_their_slope_at_the_reference():
@@ -20,16 +20,16 @@ def test_viscosity_laws_are_andrade_and_vogel_with_their_slope_at_the_reference(
         B = 4000.0
         law = np.exp(B * (1 / (t + C) - 1 / (20.0 + C)))
         b = B / (20.0 + C) ** 2
-        assert fx.viscosity_ratio(t, b, 20.0, C) == pytest.approx(law, rel=1e-12)
-    assert fx.viscosity_ratio(t, 0.03, 20.0) == pytest.approx(np.exp(-0.03 * (t - 20.0)))
+        assert laws.viscosity_ratio(t, b, 20.0, C) == pytest.approx(law, rel=1e-12)
+    assert laws.viscosity_ratio(t, 0.03, 20.0) == pytest.approx(np.exp(-0.03 * (t - 20.0)))
 
 
 def test_speed_loss_moves_the_efficiency_at_the_reference_temperature_only_with_speed():
     speed = np.array([500.0, 1000.0, 2000.0])
-    t = np.full(3, fx.REFERENCE_TEMPERATURE_C)
-    plain = fx.temperature_factor(t, 0.2, 0.03, fx.REFERENCE_TEMPERATURE_C, speed, s=0.5)
+    t = np.full(3, laws.REFERENCE_TEMPERATURE_C)
+    plain = laws.temperature_factor(t, 0.2, 0.03, laws.REFERENCE_TEMPERATURE_C, speed, s=0.5)
     assert plain == pytest.approx(1.0)
-    grown = fx.temperature_factor(t, 0.2, 0.03, fx.REFERENCE_TEMPERATURE_C, speed, s=0.5,
+    grown = laws.temperature_factor(t, 0.2, 0.03, laws.REFERENCE_TEMPERATURE_C, speed, s=0.5,
                                   speed_loss=0.1)
     assert grown[1] == pytest.approx(1.0)            # n_ref: the reference point
     assert grown[0] > 1.0 > grown[2]                 # less loss slower, more faster
@@ -93,11 +93,11 @@ def test_a_drag_that_grows_with_viscosity_lowers_the_low_load_efficiency_of_a_co
     """c_n × g^k: k = 0 is the drag independent of temperature; in a cold gear (g > 1) the
     no-load loss is larger, so Ke falls further; at α ≥ 1 Ke stays 1."""
     alpha = np.array([0.1, 0.5, 1.0])
-    plain = fx.low_load_factor(alpha, 0.05, 1.0)
-    assert fx.low_load_factor(alpha, 0.05, 1.0, viscosity=np.full(3, 3.0), k=0.0) == \
+    plain = laws.low_load_factor(alpha, 0.05, 1.0)
+    assert laws.low_load_factor(alpha, 0.05, 1.0, viscosity=np.full(3, 3.0), k=0.0) == \
         pytest.approx(plain)
-    cold = fx.low_load_factor(alpha, 0.05, 1.0, viscosity=np.full(3, 3.0), k=2 / 3)
-    warm = fx.low_load_factor(alpha, 0.05, 1.0, viscosity=np.full(3, 0.5), k=2 / 3)
+    cold = laws.low_load_factor(alpha, 0.05, 1.0, viscosity=np.full(3, 3.0), k=2 / 3)
+    warm = laws.low_load_factor(alpha, 0.05, 1.0, viscosity=np.full(3, 0.5), k=2 / 3)
     assert cold[0] < plain[0] < warm[0] and cold[2] == warm[2] == 1.0
     # Palmgren's no-load torque ∝ ν^(2/3): c_n scales by 3^(2/3) in oil three times as thick
     c = 0.05 * 3.0 ** (2 / 3)

@@ -20,6 +20,7 @@ import numpy as np
 from scipy.optimize import least_squares
 
 from . import baseline as baselines
+from . import efficiency_laws as laws
 from . import effects as fx
 from . import preisach
 from .bounded import solve
@@ -277,13 +278,13 @@ def columns(problem: Problem, effects: tuple[str, ...], theta: dict[str, float],
             for k in overtones_of(problem, effects, name):
                 add(name, [f"sin_{k}x", f"cos_{k}x"], harmonic(problem, k, theta, full)[:, :2])
         elif name == "low_load_efficiency":
-            f = fx.low_load_factor(inp["alpha"], th["c"], th["q"], inp["input_speed_rpm"],
+            f = laws.low_load_factor(inp["alpha"], th["c"], th["q"], inp["input_speed_rpm"],
                                    th["s"], _viscosity(problem, effects, theta, inp),
                                    problem.drag_viscosity_exponent)
             factor = f if factor is None else factor * f
         elif name == "temperature_dependence":
-            f = fx.temperature_factor(inp["temperature_C"], th["a"], th["b"],
-                                      fx.REFERENCE_TEMPERATURE_C, inp["input_speed_rpm"],
+            f = laws.temperature_factor(inp["temperature_C"], th["a"], th["b"],
+                                      laws.REFERENCE_TEMPERATURE_C, inp["input_speed_rpm"],
                                       th["s"], th["boundary"], problem.viscosity_C,
                                       problem.speed_loss, problem.temperature_band)
             factor = f if factor is None else factor * f
@@ -339,9 +340,9 @@ def _viscosity(problem: Problem, effects: tuple[str, ...], theta: dict, inp: dic
     grows with viscosity."""
     if not problem.drag_viscosity_exponent or "temperature_dependence" not in effects:
         return None
-    return fx.temperature_ratio(inp["temperature_C"],
+    return laws.temperature_ratio(inp["temperature_C"],
                                 theta[key_of("temperature_dependence", "b")],
-                                fx.REFERENCE_TEMPERATURE_C, problem.viscosity_C,
+                                laws.REFERENCE_TEMPERATURE_C, problem.viscosity_C,
                                 problem.temperature_band)
 
 

@@ -6,6 +6,7 @@ import math
 
 import numpy as np
 
+from . import efficiency_laws as laws
 from . import effects as fx
 from .fitting import Fit, Problem, key_of, parameters_of
 from .harmonics import TE_LABELS, frames_of, legendre, te_order_of
@@ -132,11 +133,11 @@ def effect_params(problem: Problem, fit: Fit, effect: str) -> dict[str, dict]:
     elif effect == "low_load_efficiency":
         out = {"c": (th["c"], "-"), "q": (th["q"], "-"), "s": (th["s"], "-"),
                "Ke_at_alpha_0.58_1000rpm": (
-                   float(fx.low_load_factor(np.array(0.58), th["c"], th["q"])), "-")}
+                   float(laws.low_load_factor(np.array(0.58), th["c"], th["q"])), "-")}
     elif effect == "temperature_dependence":
         out = {"a": (th["a"], "-"), "b": (th["b"], "1/K"), "s": (th["s"], "-"),
                "boundary": (th["boundary"], "-"),
-               "t_ref": (fx.REFERENCE_TEMPERATURE_C, "°C")}
+               "t_ref": (laws.REFERENCE_TEMPERATURE_C, "°C")}
     return {k: {"value": float(v), "unit": u} for k, (v, u) in out.items()}
 
 

@@ -17,7 +17,7 @@ import numpy as np
 
 from scipy.optimize import minimize_scalar
 
-from . import effects as fx
+from . import efficiency_laws as laws
 from .fitting import Fit, Problem, finish, fit_model, nonlinear
 from .frames import refine_frames
 from .gates import BIC_MIN, bic_best, bic_gain, effective_n
@@ -136,7 +136,7 @@ def refine_viscosity(problem: Problem, fit: Fit) -> Fit:
         return fit
     best, law = fit_viscosity_law(problem, fit)
     problem.notes.append(f"viscosity law: {law} (C = {problem.viscosity_C:g} °C), the best "
-                         f"of {', '.join(fx.VISCOSITY_LAWS_C)} on these data")
+                         f"of {', '.join(laws.VISCOSITY_LAWS_C)} on these data")
     return _viscous_drag(problem, _speed_loss(problem, _temperature_band(problem, best)))
 
 
@@ -195,14 +195,14 @@ def fit_viscosity_law(problem: Problem, fit: Fit) -> tuple[Fit, str]:
     Vogel–Cameron's law, whichever leaves the least residual; ``problem.viscosity_C`` is
     left at that law."""
     best, law = fit, "Reynolds"
-    for name, constant in fx.VISCOSITY_LAWS_C.items():
+    for name, constant in laws.VISCOSITY_LAWS_C.items():
         if math.isinf(constant):
             continue
         problem.viscosity_C = constant
         trial = fit_model(problem, fit.effects, fit.theta)
         if trial.rss < best.rss:
             best, law = trial, name
-    problem.viscosity_C = fx.VISCOSITY_LAWS_C[law]
+    problem.viscosity_C = laws.VISCOSITY_LAWS_C[law]
     return best, law
 
 
@@ -214,8 +214,8 @@ def _speed_loss(problem: Problem, fit: Fit) -> Fit:
     if fit.theta.get("temperature_dependence.s", 0.0) == 0.0:
         return fit  # no speed in the law: u would have nothing to act on
     return _one_more(problem, fit, "speed_loss", _SPEED_LOSS_BOUNDS, lambda u: (
-        f"temperature law: the viscous loss at {fx.REFERENCE_TEMPERATURE_C:g} °C grows with "
-        f"speed too (u = {u:.3g} of the input power at {fx.KE_REFERENCE_SPEED_RPM:g} r/min, "
+        f"temperature law: the viscous loss at {laws.REFERENCE_TEMPERATURE_C:g} °C grows with "
+        f"speed too (u = {u:.3g} of the input power at {laws.KE_REFERENCE_SPEED_RPM:g} r/min, "
         "× (n/n_ref)^s − 1)"))
 
 
