@@ -40,6 +40,11 @@ def fmt(value: float, unit: str = "") -> str:
     return f"{text} {unit}".strip()
 
 
+# the data's dots are drawn as an image inside the SVG (thousands of vector markers take a
+# PDF renderer seconds), at this resolution; axes, lines and text stay vectors
+RASTER_DPI = 200
+
+
 def _x(result: Reconciliation) -> np.ndarray:
     name = X_AXIS[result.kind][0]
     x = result.series[name]
@@ -66,18 +71,19 @@ def comparison_plot(result: Reconciliation, path: Path) -> Path:
     i = _pick(len(x))
     line = np.argsort(x[i], kind="stable") if result.kind == "efficiency" else slice(None)
     fig, ax = plt.subplots(figsize=(7.0, 3.6))
-    ax.plot(x[i], (s["measured"] - minus)[i], ".", ms=1.5, color="0.6", label="measured")
-    style = "." if result.kind in ("transmission", "efficiency") else "-"
-    ax.plot(x[i][line], (s["baseline"] - minus)[i][line], style, ms=1.5, lw=0.8,
-            color="tab:blue", label="baseline (catalog)")
-    ax.plot(x[i][line], (s["reconciled"] - minus)[i][line], style, ms=1.5, lw=0.8,
-            color="tab:red", label="reconciled")
+    ax.plot(x[i], (s["measured"] - minus)[i], ".", ms=1.5, color="0.6", label="measured",
+            rasterized=True)
+    dots = result.kind in ("transmission", "efficiency")
+    ax.plot(x[i][line], (s["baseline"] - minus)[i][line], "." if dots else "-", ms=1.5,
+            lw=0.8, color="tab:blue", label="baseline (catalog)", rasterized=dots)
+    ax.plot(x[i][line], (s["reconciled"] - minus)[i][line], "." if dots else "-", ms=1.5,
+            lw=0.8, color="tab:red", label="reconciled", rasterized=dots)
     ax.set_xlabel(X_AXIS[result.kind][1])
     ax.set_ylabel(Y_LABEL[result.kind])
     ax.grid(alpha=0.3)
     ax.legend(fontsize=7, markerscale=4)
     fig.tight_layout()
-    fig.savefig(path)
+    fig.savefig(path, dpi=RASTER_DPI)
     plt.close(fig)
     return path
 
@@ -93,7 +99,8 @@ def residual_plot(result: Reconciliation, path: Path) -> Path:
     fig, axes = plt.subplots(2, 1, figsize=(7.0, 4.6), sharex=True)
     for ax, name, title in ((axes[0], "baseline", "before: measured − baseline"),
                             (axes[1], "reconciled", "after: measured − reconciled")):
-        ax.plot(x[i], (s["measured"] - s[name])[i], ".", ms=1.2, color="0.3")
+        ax.plot(x[i], (s["measured"] - s[name])[i], ".", ms=1.2, color="0.3",
+                rasterized=True)
         for sign in (-1, 1):
             ax.axhline(sign * result.noise_rms, color="tab:green", lw=0.8, ls="--")
         ax.set_title(title, fontsize=8)
@@ -101,7 +108,7 @@ def residual_plot(result: Reconciliation, path: Path) -> Path:
         ax.grid(alpha=0.3)
     axes[1].set_xlabel(X_AXIS[result.kind][1])
     fig.tight_layout()
-    fig.savefig(path)
+    fig.savefig(path, dpi=RASTER_DPI)
     plt.close(fig)
     return path
 
