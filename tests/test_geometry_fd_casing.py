@@ -33,6 +33,24 @@ def _round_trip(part, folder):
     return shape
 
 
+_BUILT: dict = {}
+
+
+@pytest.fixture(scope="module")
+def built(catalog, tmp_path_factory):
+    """(half, part, STEP path, re-imported shape) of a casing half with the default options,
+    built and exported once per size and side for the tests that only read it."""
+    def get(size, side):
+        if (size, side) not in _BUILT:
+            half = FDCasingHalf(size, catalog, DesignOptions(), side=side)
+            part = half.build()
+            folder = tmp_path_factory.mktemp(f"fd{size}{side}")
+            shape = _round_trip(part, folder)
+            _BUILT[size, side] = (half, part, folder / f"{part.name}.step", shape)
+        return _BUILT[size, side]
+    return get
+
+
 def _feature(shape, diameter):
     """The on-axis turned surface of ``diameter`` (merged faces) that reaches furthest in +z
     (a groove splits a bore into two surfaces), or None."""
@@ -54,10 +72,9 @@ def _radial_holes(shape, diameter):
 
 @pytest.mark.parametrize("side", ["S", "D"])
 @pytest.mark.parametrize("size", SIZES)
-def test_casing_half_measured_from_step(size, side, catalog, tmp_path):
-    half = FDCasingHalf(size, catalog, DesignOptions(), side=side)
-    lay, part = half.lay, half.build()
-    shape = _round_trip(part, tmp_path)
+def test_casing_half_measured_from_step(size, side, built):
+    half, part, _, shape = built(size, side)
+    lay = half.lay
     box = shape.BoundingBox()
     assert box.xlen == pytest.approx(lay.outer_d, abs=TOL)
     assert box.zmax == pytest.approx(lay.thickness, abs=TOL)
@@ -163,8 +180,8 @@ def test_sleeve_measured_from_step(size, catalog, tmp_path):
 
 
 @pytest.mark.parametrize("size", [25, 100])
-def test_fits_carry_iso_286_deviations(size, catalog):
-    part = FDCasingHalf(size, catalog, DesignOptions(), side="S").build()
+def test_fits_carry_iso_286_deviations(size, built):
+    part = built(size, "S")[1]
     codes = {f.code: f for f in part.fits}
     assert {"M7", "H7", "H8"} <= set(codes)
     seat = codes["M7"]
@@ -214,18 +231,16 @@ def test_gear_recess_leaves_way_for_a_wall_and_says_so(size, catalog):
 
 
 @pytest.mark.parametrize("size", SIZES)
-def test_lightening_groove_keeps_walls_and_reports_the_mass_saved(size, catalog, tmp_path):
+def test_lightening_groove_keeps_walls_and_reports_the_mass_saved(size, built):
     """HOUSING_RULES §4: pockets where material carries nothing, mass before and after. The
     groove floor is a turned surface of the stated Ø between z0 and z1; it stays a steel wall
     (3 mm) from the spline-screw clearance holes and the port spot faces; the volume it took
     is the re-imported solid's volume difference to the same half built without it."""
-    half = FDCasingHalf(size, catalog, DesignOptions(), side="S")
+    half, part, _, shape = built(size, "S")
     relief, lay = half.relief, half.lay
     if relief is None:  # FD-20: the port spot faces and counterbores leave < RELIEF_MIN_MM
         assert size == 20
         return
-    part = half.build()
-    shape = _round_trip(part, tmp_path)
     floor = _feature(shape, relief.floor_d)
     assert floor is not None
     assert floor.z0 >= relief.z0 - TOL and floor.z1 <= relief.z1 + TOL
@@ -247,15 +262,13 @@ def test_lightening_groove_keeps_walls_and_reports_the_mass_saved(size, catalog,
 
 
 @pytest.mark.parametrize("size", SIZES)
-def test_every_size_draws_from_its_step(size, catalog, tmp_path):
+def test_every_size_draws_from_its_step(size, built, tmp_path):
     """The drawing checks every stated dimension against the STEP faces; a size whose
     record names a face the solid lacks (e.g. a step that vanishes when the body keeps the
     outer Ø) would stop the design with an internal error."""
     from hdcad.geometry.drawing import part_drawing
     for side in ("S", "D"):
-        part = FDCasingHalf(size, catalog, DesignOptions(), side=side).build()
-        path = tmp_path / f"{part.name}.step"
-        export_step(part, path)
+        _, part, path, _ = built(size, side)
         result = part_drawing(path, part, tmp_path / f"{part.name}.svg")
         assert result["views"][1]["section"] == "A–A"
         assert result["dimensions"]
