@@ -9,7 +9,6 @@ import statistics
 import subprocess
 import sys
 import time
-from pathlib import Path
 
 from hdcad.catalog import load_catalog
 from hdcad.checks.run import run_checks

@@ -1,12 +1,10 @@
 """Check functions against hand calculations and the rules the seeds state."""
 
-import copy
 import math
 from fractions import Fraction
 
 import pytest
 
-from hdcad.catalog import Datum
 from hdcad.checks.fd import momentary_allowance, rating_at_speed
 from hdcad.checks.lubrication import duty_ratio_pct, longest_continuous_run_s
 from hdcad.checks.main_bearing import main_bearing

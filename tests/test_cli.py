@@ -4,8 +4,6 @@ import json
 import subprocess
 import sys
 
-import pytest
-
 from hdcad.checks import CHECK_IDS
 from hdcad.cli import main
 

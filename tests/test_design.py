@@ -17,7 +17,6 @@ def _design(tmp_path, model, duty, *extra):
 
 @pytest.fixture(scope="module")
 def fd2_design(tmp_path_factory):
-    from hdcad.resources import examples_dir
     tmp = tmp_path_factory.mktemp("fd2")
     duty = tmp / "light.yaml"
     duty.write_text("""

@@ -78,12 +78,13 @@ class Problem:
     # slip torque [N·m], its log-spread [-], spread of the relays' centres [N·m]) instead of
     # the Bouc–Wen loop; tried once the effect is named (loops.refine_preisach)
     hysteresis_preisach: tuple[float, float, float] | None = None
-    # constant C [°C] of the viscosity–temperature law (effects.VISCOSITY_LAWS_C): Reynolds'
-    # while effects are named, the law that fits best once they are (refine.refine_viscosity)
+    # constant C [°C] of the viscosity–temperature law (efficiency_laws.VISCOSITY_LAWS_C):
+    # Reynolds' while effects are named, the law that fits best once they are
+    # (refine.refine_viscosity)
     viscosity_C: float = math.inf
     # (centre [°C], width [K]) of a band of temperature over which the loss changes
-    # (effects.band_ratio) in place of the viscosity law: None while effects are named, tried
-    # once they are (refine.refine_viscosity)
+    # (efficiency_laws.band_ratio) in place of the viscosity law: None while effects are
+    # named, tried once they are (refine.refine_viscosity)
     temperature_band: tuple[float, float] | None = None
     # share u of the viscous loss at t_ref that grows with speed: 0 while effects are named,
     # fitted once they are (refine.refine_viscosity)
@@ -279,14 +280,14 @@ def columns(problem: Problem, effects: tuple[str, ...], theta: dict[str, float],
                 add(name, [f"sin_{k}x", f"cos_{k}x"], harmonic(problem, k, theta, full)[:, :2])
         elif name == "low_load_efficiency":
             f = laws.low_load_factor(inp["alpha"], th["c"], th["q"], inp["input_speed_rpm"],
-                                   th["s"], _viscosity(problem, effects, theta, inp),
-                                   problem.drag_viscosity_exponent)
+                                     th["s"], _viscosity(problem, effects, theta, inp),
+                                     problem.drag_viscosity_exponent)
             factor = f if factor is None else factor * f
         elif name == "temperature_dependence":
             f = laws.temperature_factor(inp["temperature_C"], th["a"], th["b"],
-                                      laws.REFERENCE_TEMPERATURE_C, inp["input_speed_rpm"],
-                                      th["s"], th["boundary"], problem.viscosity_C,
-                                      problem.speed_loss, problem.temperature_band)
+                                        laws.REFERENCE_TEMPERATURE_C, inp["input_speed_rpm"],
+                                        th["s"], th["boundary"], problem.viscosity_C,
+                                        problem.speed_loss, problem.temperature_band)
             factor = f if factor is None else factor * f
     X = np.column_stack(cols)
     if factor is not None:  # η = η0·Ke(α)·F(t): the effects scale the whole efficiency
@@ -341,9 +342,9 @@ def _viscosity(problem: Problem, effects: tuple[str, ...], theta: dict, inp: dic
     if not problem.drag_viscosity_exponent or "temperature_dependence" not in effects:
         return None
     return laws.temperature_ratio(inp["temperature_C"],
-                                theta[key_of("temperature_dependence", "b")],
-                                laws.REFERENCE_TEMPERATURE_C, problem.viscosity_C,
-                                problem.temperature_band)
+                                  theta[key_of("temperature_dependence", "b")],
+                                  laws.REFERENCE_TEMPERATURE_C, problem.viscosity_C,
+                                  problem.temperature_band)
 
 
 # --------------------------------------------------------------------------- fitting

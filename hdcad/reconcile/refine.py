@@ -142,7 +142,7 @@ def refine_viscosity(problem: Problem, fit: Fit) -> Fit:
 
 def _temperature_band(problem: Problem, fit: Fit) -> Fit:
     """The temperature law as a loss that changes over a band of temperature
-    (:func:`.effects.band_ratio`, its centre and width two parameters more) in place of the
+    (:func:`.efficiency_laws.band_ratio`, its centre and width two parameters more) in place of the
     viscosity law, kept when BIC with the effective sample size prefers it: an additive
     that activates or a grease that changes consistency steps the efficiency between two
     temperatures where a viscosity law bends it smoothly over all of them. Centres between
