@@ -239,6 +239,21 @@ def test_temperature_factor_is_one_at_reference_and_rises_with_warm_grease():
     assert f[3] == pytest.approx(1 / (1 - 0.2))   # viscous loss gone entirely
 
 
+def test_the_flat_low_load_shape_meets_rated_torque_without_slope():
+    """Ke = 1 − c/(1 + c)·(1 − α)^q: 1 from rated torque up, 1 − c/(1 + c) at no load, no
+    slope at α = 1 for q > 1 (the hyperbolic shape has slope q·c/(1 + c) there and falls to
+    0 at no load)."""
+    alpha = np.array([0.0, 0.5, 1.0 - 1e-6, 1.0, 2.0])
+    ke = laws.low_load_factor(alpha, 0.25, 2.0, flat=True)
+    assert ke[0] == pytest.approx(1 - 0.25 / 1.25)
+    assert ke[1] == pytest.approx(1 - 0.2 * 0.25)
+    assert (ke[3], ke[4]) == (1.0, 1.0)
+    assert (ke[3] - ke[2]) / 1e-6 == pytest.approx(0.0, abs=1e-5)
+    hyperbolic = laws.low_load_factor(alpha, 0.25, 2.0)
+    assert hyperbolic[0] == 0.0
+    assert (hyperbolic[3] - hyperbolic[2]) / 1e-6 == pytest.approx(2.0 * 0.25 / 1.25, rel=1e-4)
+
+
 def test_a_band_law_steps_over_its_band_and_is_reynolds_when_wide():
     """ln g changes by 4·b·w across the band, with slope −b at its centre, is flat well
     outside it, and tends to Reynolds' exp(−b·Δt) as the band widens (σ(x) ≈ ½ + x/4)."""

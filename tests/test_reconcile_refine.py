@@ -75,6 +75,18 @@ def test_a_loss_that_steps_over_a_band_of_temperature_is_followed(suite, name,
     assert banded is not keeps_viscosity
 
 
+def test_a_low_load_curve_flat_at_rated_torque_takes_the_flat_shape():
+    """Suite B's Ke power curve, Ke = 1 − a·(1 − α)^p with p 1.2–2.5, reaches rated torque
+    with no slope and stays finite at no load; the load-independent loss's shape left
+    1.85σ on this pair (seed 11, 1 per cell; 0.99σ now), 1.64 and 3.23σ on the two at 2 per cell
+    (1.00 and 1.01σ with the flat shape)."""
+    case, result = case_run("b", "b-efficiency-pair-low_load_efficiency+"
+                            "temperature_dependence-kepower-viscous-000")
+    assert set(result["missing_effects"]) == {"low_load_efficiency", "temperature_dependence"}
+    assert any(note.startswith("low-load factor: Ke = 1 − c/(1 + c)") for note in result["notes"])
+    assert result["rmse_after"] <= 1.2 * case.noise_rms
+
+
 def test_an_outlier_hidden_by_the_effects_is_left_out_of_the_named_model():
     """Suite C's drag-torque low-load single (seed 11, 2 per cell) holds one gross outlier,
     9.8× its noise. On the baseline's residual the efficiency drop, in the grid's random run

@@ -356,7 +356,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                      "α = T/Tr, Ke = 1 for α ≥ 1 (seed 000 p.023, graph 023-1: α = 0.58 → "
                      "Ke = 0.93)."),
         form=("η = Ke(α, n)·η0, Ke = (α(1 + c_n)/(α + c_n))^q for α < 1, 1 above; "
-              "c_n = c·(n/1000 r/min)^s"),
+              "c_n = c·(n/1000 r/min)^s; once named, Ke = 1 − c_n/(1 + c_n)·(1 − α)^q "
+              "(flat at rated torque) where that fits better"),
         parameters=(
             Parameter("c", "-", "load-independent loss as a fraction of rated power at "
                       "1000 r/min input speed", 1e-4, 3.0),

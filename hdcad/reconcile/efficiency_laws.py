@@ -25,7 +25,7 @@ KE_REFERENCE_SPEED_RPM = 1000.0
 
 def low_load_factor(alpha: np.ndarray, c: float, q: float, speed_rpm: np.ndarray | None = None,
                     s: float = 0.0, viscosity: np.ndarray | None = None,
-                    k: float = 0.0) -> np.ndarray:
+                    k: float = 0.0, flat: bool = False) -> np.ndarray:
     """Efficiency correction Ke(α) [-] for α = T/Tr < 1; Ke = 1 for α ≥ 1.
 
     Ke = (α·(1 + c_n)/(α + c_n))^q: a load-independent loss (no-load running torque, seed 000
@@ -36,6 +36,11 @@ def low_load_factor(alpha: np.ndarray, c: float, q: float, speed_rpm: np.ndarray
     A drag torque also grows with the oil's viscosity: × g^k, g = ν(t)/ν(20 °C) (``viscosity``;
     k = 0 a drag independent of temperature; Palmgren's no-load torque ∝ (ν·n)^(2/3)).
 
+    ``flat``: the graph's other shape, Ke = 1 − c_n/(1 + c_n)·(1 − α)^q, a drop that reaches
+    rated torque with no slope (q > 1) and stays finite at no load (a read-off curve such as
+    graph 023-1, where the load-independent loss is not the whole low-load loss); the same
+    parameters, so the two shapes are compared by their residual alone.
+
     References: Palmgren, A. (1959) Ball and Roller Bearing Engineering, 3rd ed., SKF.
     """
     a = np.minimum(np.asarray(alpha, dtype=float), 1.0)
@@ -43,6 +48,8 @@ def low_load_factor(alpha: np.ndarray, c: float, q: float, speed_rpm: np.ndarray
         c = c * (np.asarray(speed_rpm, dtype=float) / KE_REFERENCE_SPEED_RPM) ** s
     if viscosity is not None and k != 0.0:
         c = c * np.asarray(viscosity, dtype=float) ** k
+    if flat:
+        return 1.0 - c / (1.0 + c) * (1.0 - a) ** q
     return (a * (1.0 + c) / (a + c)) ** q
 
 

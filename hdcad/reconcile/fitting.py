@@ -90,6 +90,9 @@ class Problem:
     # fitted once they are (refine.refine_viscosity)
     speed_loss: float = 0.0
     drag_viscosity_exponent: float = 0.0  # k of the low-load drag ∝ ν^k beside a temperature law
+    # the low-load factor's shape flat at rated torque (efficiency_laws.low_load_factor):
+    # False while effects are named, the better of the two once they are (refine)
+    low_load_flat: bool = False
     # knee torque T_k [N·m] of a housing spring that stiffens (effects.progressive_twist):
     # ∞ (linear) while effects are named, fitted once they are (springs.stiffening)
     housing_knee: float = math.inf
@@ -281,7 +284,7 @@ def columns(problem: Problem, effects: tuple[str, ...], theta: dict[str, float],
         elif name == "low_load_efficiency":
             f = laws.low_load_factor(inp["alpha"], th["c"], th["q"], inp["input_speed_rpm"],
                                      th["s"], _viscosity(problem, effects, theta, inp),
-                                     problem.drag_viscosity_exponent)
+                                     problem.drag_viscosity_exponent, problem.low_load_flat)
             factor = f if factor is None else factor * f
         elif name == "temperature_dependence":
             f = laws.temperature_factor(inp["temperature_C"], th["a"], th["b"],

@@ -133,7 +133,8 @@ def effect_params(problem: Problem, fit: Fit, effect: str) -> dict[str, dict]:
     elif effect == "low_load_efficiency":
         out = {"c": (th["c"], "-"), "q": (th["q"], "-"), "s": (th["s"], "-"),
                "Ke_at_alpha_0.58_1000rpm": (
-                   float(laws.low_load_factor(np.array(0.58), th["c"], th["q"])), "-")}
+                   float(laws.low_load_factor(np.array(0.58), th["c"], th["q"],
+                                             flat=problem.low_load_flat)), "-")}
     elif effect == "temperature_dependence":
         out = {"a": (th["a"], "-"), "b": (th["b"], "1/K"), "s": (th["s"], "-"),
                "boundary": (th["boundary"], "-"),

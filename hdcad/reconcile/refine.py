@@ -110,8 +110,8 @@ def refine(problem: Problem, fit: Fit) -> Fit:
     fit = refine_frames(problem, fit)
     curved = refine_spring(problem, fit)
     if curved is fit:
-        fit = refine_hysteresis(problem, refine_viscosity(
-            problem, refine_te_order(problem, refine_te_overtones(problem, fit))))
+        fit = refine_hysteresis(problem, refine_viscosity(problem, refine_low_load(
+            problem, refine_te_order(problem, refine_te_overtones(problem, fit)))))
         return refine_preisach(problem, refine_play(problem, fit))
     return curved
 
@@ -126,6 +126,24 @@ def refine_play(problem: Problem, fit: Fit) -> Fit:
     return _one_more(problem, fit, "play_hold", _PLAY_HOLD_BOUNDS, lambda h: (
         f"backlash: the play is held by friction until the load passes {h * t0:.3g} N·m "
         "in the new direction"))
+
+
+def refine_low_load(problem: Problem, fit: Fit) -> Fit:
+    """The named low-load factor in the better of its two shapes
+    (:func:`.efficiency_laws.low_load_factor`): the load-independent loss's (Ke → 0 at no
+    load, used to name it) or one flat at rated torque, finite at no load. The same
+    parameters, so the smaller residual decides."""
+    if "low_load_efficiency" not in fit.effects:
+        return fit
+    problem.low_load_flat = True
+    flat = fit_model(problem, fit.effects, fit.theta)
+    if flat.rss >= fit.rss:
+        problem.low_load_flat = False
+        return fit
+    problem.notes.append("low-load factor: Ke = 1 − c/(1 + c)·(1 − α)^q, flat at rated "
+                         "torque, fits better than the load-independent loss's "
+                         "(α·(1 + c)/(α + c))^q")
+    return flat
 
 
 def refine_viscosity(problem: Problem, fit: Fit) -> Fit:
