@@ -418,6 +418,23 @@ def fit_model(problem: Problem, effects: tuple[str, ...],
     return finish(problem, effects, theta, len(in_use))
 
 
+def best_setting(problem: Problem, fit: Fit, current, settings, apply) -> tuple[Fit, object]:
+    """(fit, setting): ``fit``, made at the problem's setting ``current``, or its refit under
+    whichever of ``settings`` leaves the least residual (the forms a named effect can take
+    with the same shapes: a viscosity law, a loop's form, the low-load curve's shape);
+    ``apply(setting)`` puts one in the problem, which is left at the winner's."""
+    best, chosen = fit, current
+    for setting in settings:
+        if setting == current:
+            continue
+        apply(setting)
+        trial = fit_model(problem, fit.effects, fit.theta)
+        if trial.rss < best.rss:
+            best, chosen = trial, setting
+    apply(chosen)
+    return best, chosen
+
+
 def rss_at(problem: Problem, effects: tuple[str, ...], theta: dict[str, float]) -> float:
     """The residual sum of squares on the fitted rows at the shape ``theta`` (amplitudes
     solved; what comparing shapes needs, without the prediction and the CV of a Fit)."""

@@ -15,7 +15,7 @@ import numpy as np
 from scipy.optimize import least_squares
 
 from . import effects as fx
-from .fitting import POLISH_TOL, Fit, Problem, columns, finish, fit_model, solve
+from .fitting import POLISH_TOL, Fit, Problem, best_setting, columns, finish, solve
 from .gates import bic_best, effective_n
 
 THROUGH_GEAR = ("hysteresis: a friction torque in parallel with the gear's spring (its twist "
@@ -44,15 +44,11 @@ def refine_hysteresis(problem: Problem, fit: Fit) -> Fit:
             or problem.base.curve is None or problem.hysteresis_series):
         return fit
     named = (problem.hysteresis_centred, problem.hysteresis_through_gear)
-    best, form = fit, named
-    for trial_form in itertools.product((False, True), repeat=2):
-        if trial_form == named:
-            continue
-        problem.hysteresis_centred, problem.hysteresis_through_gear = trial_form
-        trial = fit_model(problem, fit.effects, fit.theta)
-        if trial.rss < best.rss:
-            best, form = trial, trial_form
-    problem.hysteresis_centred, problem.hysteresis_through_gear = form
+
+    def apply(form):
+        problem.hysteresis_centred, problem.hysteresis_through_gear = form
+    best, form = best_setting(problem, fit, named, itertools.product((False, True), repeat=2),
+                              apply)
     for used, was, text, than in zip(form, named, (CENTRED, THROUGH_GEAR),
                                      ("a loop with its own backbone", "a constant compliance")):
         if used and not was:

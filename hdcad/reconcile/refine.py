@@ -18,7 +18,7 @@ import numpy as np
 from scipy.optimize import minimize_scalar
 
 from . import efficiency_laws as laws
-from .fitting import Fit, Problem, finish, fit_model, nonlinear
+from .fitting import Fit, Problem, best_setting, finish, fit_model, nonlinear
 from .frames import refine_frames
 from .gates import BIC_MIN, bic_best, bic_gain, effective_n
 from .harmonics import TE_ORDER_MAX
@@ -135,15 +135,13 @@ def refine_low_load(problem: Problem, fit: Fit) -> Fit:
     parameters, so the smaller residual decides."""
     if "low_load_efficiency" not in fit.effects:
         return fit
-    problem.low_load_flat = True
-    flat = fit_model(problem, fit.effects, fit.theta)
-    if flat.rss >= fit.rss:
-        problem.low_load_flat = False
-        return fit
-    problem.notes.append("low-load factor: Ke = 1 − c/(1 + c)·(1 − α)^q, flat at rated "
-                         "torque, fits better than the load-independent loss's "
-                         "(α·(1 + c)/(α + c))^q")
-    return flat
+    best, flat = best_setting(problem, fit, False, (True,),
+                              lambda v: setattr(problem, "low_load_flat", v))
+    if flat:
+        problem.notes.append("low-load factor: Ke = 1 − c/(1 + c)·(1 − α)^q, flat at rated "
+                             "torque, fits better than the load-independent loss's "
+                             "(α·(1 + c)/(α + c))^q")
+    return best
 
 
 def refine_viscosity(problem: Problem, fit: Fit) -> Fit:
@@ -160,12 +158,13 @@ def refine_viscosity(problem: Problem, fit: Fit) -> Fit:
 
 def _temperature_band(problem: Problem, fit: Fit) -> Fit:
     """The temperature law as a loss that changes over a band of temperature
-    (:func:`.efficiency_laws.band_ratio`, its centre and width two parameters more) in place of the
-    viscosity law, kept when BIC with the effective sample size prefers it: an additive
-    that activates or a grease that changes consistency steps the efficiency between two
-    temperatures where a viscosity law bends it smoothly over all of them. Centres between
-    the temperatures tested, a few widths; not tried when the residual's means over the
-    test's temperatures and speeds hold too little to pay for the two parameters."""
+    (:func:`.efficiency_laws.band_ratio`, its centre and width two parameters more) in place
+    of the viscosity law, kept when BIC with the effective sample size prefers it: an
+    additive that activates or a grease that changes consistency steps the efficiency
+    between two temperatures where a viscosity law bends it smoothly over all of them.
+    Centres between the temperatures tested, a few widths; not tried when the residual's
+    means over the test's temperatures and speeds hold too little to pay for the two
+    parameters."""
     t = problem.base.inputs["temperature_C"][problem.rows]
     levels = np.unique(np.round(t, 1))
     if len(levels) < 3:
@@ -175,18 +174,16 @@ def _temperature_band(problem: Problem, fit: Fit) -> Fit:
         return fit
     if len(levels) > _BAND_CENTRES + 1:
         levels = np.quantile(t, np.linspace(0.0, 1.0, _BAND_CENTRES + 1))
-    trials = {}
-    for centre in 0.5 * (levels[1:] + levels[:-1]):
-        for width in _BAND_WIDTHS_K:
-            problem.temperature_band = (float(centre), width)
-            trials[problem.temperature_band] = fit_model(problem, fit.effects, fit.theta)
-    band = min(trials, key=lambda b: trials[b].rss)
-    banded = trials[band]
+    bands = [(float(centre), width) for centre in 0.5 * (levels[1:] + levels[:-1])
+             for width in _BAND_WIDTHS_K]
+    banded, band = best_setting(problem, fit, None, bands,
+                                lambda b: setattr(problem, "temperature_band", b))
+    if band is None:
+        return fit
     n_eff = effective_n(problem, banded.residual(problem))
     if bic_best({False: (fit.rss, 0), True: (banded.rss, 2)}, n_eff) is False:
         problem.temperature_band = None
         return fit
-    problem.temperature_band = band
     problem.notes.append(
         f"temperature law: the loss changes over a band of temperature about {band[0]:.3g} °C "
         f"(width {band[1]:g} K; an additive's activation, a grease's consistency) in place "
@@ -212,16 +209,8 @@ def fit_viscosity_law(problem: Problem, fit: Fit) -> tuple[Fit, str]:
     """(fit, law name): ``fit`` (at Reynolds' exponential) or its refit under Andrade's or
     Vogel–Cameron's law, whichever leaves the least residual; ``problem.viscosity_C`` is
     left at that law."""
-    best, law = fit, "Reynolds"
-    for name, constant in laws.VISCOSITY_LAWS_C.items():
-        if math.isinf(constant):
-            continue
-        problem.viscosity_C = constant
-        trial = fit_model(problem, fit.effects, fit.theta)
-        if trial.rss < best.rss:
-            best, law = trial, name
-    problem.viscosity_C = laws.VISCOSITY_LAWS_C[law]
-    return best, law
+    return best_setting(problem, fit, "Reynolds", laws.VISCOSITY_LAWS_C, lambda law: setattr(
+        problem, "viscosity_C", laws.VISCOSITY_LAWS_C[law]))
 
 
 def _speed_loss(problem: Problem, fit: Fit) -> Fit:

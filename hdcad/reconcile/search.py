@@ -321,8 +321,8 @@ def _beyond_modulation(problem: Problem, member: str, other: Fit, fit: Fit, sigm
 
 def _beyond_law(problem: Problem, member: str, other: Fit, fit: Fit, sigma: float,
                 tau: float) -> bool:
-    """Whether ``member`` still earns its place over a temperature dependence that has its
-    best viscosity law (:data:`.efficiency_laws.VISCOSITY_LAWS_C`; Reynolds' names the effects).
+    """Whether ``member`` still earns its place over a temperature dependence that has its best
+    viscosity law (:data:`.efficiency_laws.VISCOSITY_LAWS_C`; Reynolds' names the effects).
     The laws differ in how the viscosity curves over the temperatures: what Reynolds' leaves
     of an Andrade or Vogel–Cameron oil is the first effect's own shape, which a low-load
     factor, also scaling the efficiency, would otherwise be named for."""

@@ -2,12 +2,12 @@
 
 A channel recorded in the wrong unit (degrees, arc-minutes or arc-seconds for radians, kN·m
 or kgf·m for N·m, an input angle in revolutions or degrees, efficiency as a fraction) scales
-the data by 57.3, 3438, 206265, 1000, 9.81, 6.28, 1/57.3 or 0.01 against the catalog: no physical effect does that. The catalog's stiffness is an average
-(seed 000 p.020) and real gears scatter by tens of percent, hysteresis and play add to the
-twist at small torque, so only a factor beyond
-``IMPLAUSIBLE`` (5) is taken as a unit error. When the factor is one of the usual unit
-mistakes the channel is converted and the finding reported (``wrong_units``, a
-measurement-chain effect); when it is not, reconcile stops with a bad-input message.
+the data by 57.3, 3438, 206265, 1000, 9.81, 6.28, 1/57.3 or 0.01 against the catalog: no
+physical effect does that. The catalog's stiffness is an average (seed 000 p.020) and real
+gears scatter by tens of percent, hysteresis and play add to the twist at small torque, so
+only a factor beyond ``IMPLAUSIBLE`` (5) is taken as a unit error. When the factor is one of
+the usual unit mistakes the channel is converted and the finding reported (``wrong_units``,
+a measurement-chain effect); when it is not, reconcile stops with a bad-input message.
 
 References
 ----------
