@@ -18,6 +18,7 @@ Seed 001 p.314 (table 314-1): FD lost motion and spring constant.
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass, field
 
@@ -253,14 +254,16 @@ def _torsion_columns(curve: StiffnessCurve, torque: np.ndarray, width: float) ->
     return np.column_stack(columns)
 
 
-def _departures(curve: StiffnessCurve) -> list[tuple[float, float]]:
-    """(T1 or T2 [N·m], printed θ less the T/K data's θ there [rad]) where θ is printed."""
+@functools.lru_cache(maxsize=64)
+def _departures(curve: StiffnessCurve) -> tuple[tuple[float, float], ...]:
+    """(T1 or T2 [N·m], printed θ less the T/K data's θ there [rad]) where θ is printed
+    (kept per curve: the fits ask for them at every step of the corner width)."""
     out = []
     for (corner, _), printed in zip(_steps(curve), (curve.theta1, curve.theta2)):
         if printed is None:
             break
         out.append((corner, printed - float(catalog_twist(curve, np.array([corner]), 0.0)[0])))
-    return out
+    return tuple(out)
 
 
 def printed_departure(curve: StiffnessCurve, torque_Nm: np.ndarray, width_Nm: float

@@ -167,40 +167,43 @@ def respond(excitation: np.ndarray, dt: float, spring: Spring, J: float, c: floa
     """θ [rad] for the error ``excitation`` (n,) sampled every dt [s], and the segment the
     twist is in at each step (0, 1, 2). Starts at rest in static equilibrium, θ(0) = e(0).
 
-    Plain floats: the recursion is sequential, and numpy's per-call cost on 2-vectors is
-    larger than the arithmetic.
+    Plain floats, the step written out: the recursion is sequential, and numpy's (or a
+    function call's) cost per step is larger than the arithmetic.
     """
     maps = _float_maps(spring, J, c, dt)
     e = np.asarray(excitation, dtype=float).tolist()
     th1, th2 = spring.theta1, spring.theta2
-
-    def segment(d):
-        a = d if d >= 0 else -d
-        return 0 if a <= th1 else (1 if a <= th2 else 2)
-
-    def step(seg, d, x, v, e0, e1):
-        p00, p01, p10, p11, a0, b0, a1, b1, o0, o1 = maps[seg]
-        if seg and d < 0:
-            o0, o1 = -o0, -o1
-        return (p00 * x + p01 * v + a0 * e0 + a1 * e1 + o0,
-                p10 * x + p11 * v + b0 * e0 + b1 * e1 + o1)
-
+    # each segment's map with its offset for a negative twist (the offset is odd in it)
+    signed = [(m, m[:8] + (-m[8], -m[9]) if i else m) for i, m in enumerate(maps)]
     x, v = e[0], 0.0
     out, segments = [x], []
     for k in range(len(e) - 1):
         e0, e1 = e[k], e[k + 1]
         d = x - e0
-        seg = segment(d)
-        x1, v1 = step(seg, d, x, v, e0, e1)
+        a = d if d >= 0 else -d
+        seg = 0 if a <= th1 else (1 if a <= th2 else 2)
+        p00, p01, p10, p11, a0, b0, a1, b1, o0, o1 = signed[seg][d < 0]
+        x1 = p00 * x + p01 * v + a0 * e0 + a1 * e1 + o0
+        v1 = p10 * x + p11 * v + b0 * e0 + b1 * e1 + o1
         end = x1 - e1
-        if segment(end) != seg:  # crosses a corner: the segment of the step's mid-twist
+        a = end if end >= 0 else -end
+        if (0 if a <= th1 else (1 if a <= th2 else 2)) != seg:  # crosses a corner: the
+            # segment of the step's mid-twist
             mid = 0.5 * (d + end)
-            seg = segment(mid)
-            x1, v1 = step(seg, mid, x, v, e0, e1)
+            seg = _segment(mid, th1, th2)
+            p00, p01, p10, p11, a0, b0, a1, b1, o0, o1 = signed[seg][mid < 0]
+            x1 = p00 * x + p01 * v + a0 * e0 + a1 * e1 + o0
+            v1 = p10 * x + p11 * v + b0 * e0 + b1 * e1 + o1
         x, v = x1, v1
         out.append(x)
         segments.append(seg)
     return np.array(out), np.array(segments, dtype=np.int8)
+
+
+def _segment(d: float, th1: float, th2: float) -> int:
+    """The curve's segment (0, 1, 2) a twist d [rad] is on."""
+    a = d if d >= 0 else -d
+    return 0 if a <= th1 else (1 if a <= th2 else 2)
 
 
 def tangents(basis: np.ndarray, segments: np.ndarray, dt: float, spring: Spring, J: float,
