@@ -5,7 +5,9 @@ Each suite was written from ``truths/CONTRACT.md`` and the physics literature wi
 suite hid. Prints per suite and per kind the confusion matrix (rows: hidden gear effects or
 the category, columns: effects named) and the acceptance figures:
 
-- single: hidden effect named first;  pair: both named;
+- single: hidden effect named first;  pair: both named; or-read: both named, or the one
+  not named given as the other reading of a nuisance (a housing spring that the stiffness
+  scale takes within its spread, reported beside it);
 - false alarm: a gear effect named on a clean or separable-decoy case;
 - wrong second name: a correctly named single effect followed by another name;
 - rmse_after / noise_rms on correctly named cases (share ≤ 1.2);  median gap shrink;
@@ -92,6 +94,11 @@ def score(case, result) -> dict:
         out["wrong_second"] = out["first_right"] and len(named) > 1
     if case.category == "pair":
         out["both"] = set(hidden) <= set(named)
+        # or the one not named given as the other reading of a nuisance (a housing spring
+        # inside the stiffness scale's spread)
+        read = {e for r in result.get("equivalent_readings", []) if r.get("nuisance")
+                for e in r.get("effects", [])}
+        out["both_or_read"] = set(hidden) <= set(named) | read
     if case.category in ("clean", "decoy_separable"):
         out["false_alarm"] = bool(named)
     if case.category == "decoy_separable" and case.measurement_effects:
@@ -121,7 +128,7 @@ def summary(rows: list[dict], label: str) -> None:
     shrinks = [r["shrink"] for r in rows if "shrink" in r and np.isfinite(r["shrink"])]
     ok_ratio = sum(x <= RMSE_FACTOR for x in ratios) / len(ratios) if ratios else np.nan
     print(f"{label:16s} single-first {fmt('first_right')} | pair-both {fmt('both')} | "
-          f"false-alarm {fmt('false_alarm')} | wrong-2nd {fmt('wrong_second')} | "
+          f"or-read {fmt('both_or_read')} | false-alarm {fmt('false_alarm')} | wrong-2nd {fmt('wrong_second')} | "
           f"exact {fmt('exact')} | rig-named {fmt('rig_right')} | equiv-both {fmt('both_readings')} | "
           f"rmse≤1.2σ {ok_ratio:6.1%} (median {statistics.median(ratios) if ratios else np.nan:.2f}) | "
           f"shrink {statistics.median(shrinks) if shrinks else np.nan:6.1%}")

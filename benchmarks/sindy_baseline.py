@@ -31,7 +31,8 @@ def _rms(x: np.ndarray) -> float:
 
 
 def _middle_theta(fitting, kind: str, effect: str, problem, start) -> dict:
-    params = fitting.nonlinear(kind, (effect,))
+    from hdcad.reconcile.model_columns import nonlinear
+    params = nonlinear(kind, (effect,))
     theta = dict(start.theta)
     for key, p in params.items():
         if key in theta:
@@ -46,11 +47,12 @@ def library(problem, start) -> tuple[np.ndarray, list[str]]:
     """Θ on the fit rows and the effect owning each column."""
     from hdcad.reconcile import effects as fx
     from hdcad.reconcile import fitting
+    from hdcad.reconcile.model_columns import columns
     kind, blocks, owners = problem.kind, [], []
     base_pred = start.columns @ start.beta
     for name in fx.applicable(kind):
         theta = _middle_theta(fitting, kind, name, problem, start)
-        X, labels, _, _ = fitting.columns(problem, (name,), theta)
+        X, labels, _, _ = columns(problem, (name,), theta)
         if name in MULTIPLICATIVE:  # η0·F − η0: the factor's change of the baseline
             n_base = sum(1 for lab in labels if lab[0] == "baseline")
             cols = (X[:, :n_base] @ start.beta[:n_base] - base_pred)[:, None]

@@ -361,7 +361,7 @@ def test_bounded_solve_matches_bvls_on_the_full_rows(seed):
     near-collinear columns (a catalog curve and its printed reading) and bounds active."""
     from scipy.optimize import lsq_linear
 
-    from hdcad.reconcile.fitting import solve
+    from hdcad.reconcile.bounded import solve
     rng = np.random.default_rng(seed)
     t = np.linspace(-1.0, 1.0, 2000)
     X = np.column_stack([t + 0.1 * t ** 3, np.ones_like(t), t + 0.12 * t ** 3,

@@ -2,7 +2,7 @@
 
 A model is the baseline's free columns (nuisances of the catalog: offset, compliance scale,
 efficiency level), the columns of the measurement-chain effects (:mod:`.rig`) and those of
-the gear effects (:mod:`.effects`). Amplitudes enter linearly and are solved by linear least
+the gear effects (:mod:`.effects`), put together by :mod:`.model_columns`. Amplitudes enter linearly and are solved by linear least
 squares; shapes (widths, loop parameters, damping, the corner width of the catalog curve)
 are fitted by ``scipy.optimize.least_squares`` over the linear solution (variable
 projection, its Jacobian from :mod:`.varpro`), started from a grid and from the values of
@@ -20,14 +20,12 @@ import numpy as np
 from scipy.optimize import least_squares
 
 from . import baseline as baselines
-from . import efficiency_laws as laws
 from . import effects as fx
 from . import preisach
 from .bounded import solve
-from . import rig
-from .effects import key_of
+from .harmonics import TE_ORDER
+from .model_columns import columns, nonlinear
 from .varpro import free_amplitudes, projected_jacobian, steps
-from .harmonics import TE_ORDER, harmonic, overtones_of, te_column_labels, te_order_of
 
 # Above this many rows the fit uses this many rows drawn at random (fixed seed; time order
 # kept, torque turning points added) — even steps could alias an efficiency grid sweep;
@@ -78,6 +76,9 @@ class Problem:
     # slip torque [N·m], its log-spread [-], spread of the relays' centres [N·m]) instead of
     # the Bouc–Wen loop; tried once the effect is named (loops.refine_preisach)
     hysteresis_preisach: tuple[float, float, float] | None = None
+    # hysteresis as a sum of friction elements with fixed slip torques, weighted freely
+    # (plays: an Iwan model) instead of the Bouc–Wen loop; tried last (loops.refine_plays)
+    hysteresis_plays: bool = False
     # constant C [°C] of the viscosity–temperature law (efficiency_laws.VISCOSITY_LAWS_C):
     # Reynolds' while effects are named, the law that fits best once they are
     # (refine.refine_viscosity)
@@ -207,149 +208,6 @@ def set_rows(problem: Problem, rows: np.ndarray) -> None:
     problem.cache.clear()
 
 
-# --------------------------------------------------------------------------- columns
-def nonlinear(kind: str, effects: tuple[str, ...]) -> dict[str, fx.Parameter]:
-    """Nonlinear parameters of a model: the baseline's nuisances and the effects' shapes."""
-    out: dict[str, fx.Parameter] = {f"catalog.{p.name}": p
-                                    for p in baselines.NUISANCE.get(kind, ())}
-    for name in effects:
-        for p in parameters_of(name, kind):
-            out.setdefault(key_of(name, p.name), p)
-    return out
-
-
-def parameters_of(name: str, kind: str) -> tuple[fx.Parameter, ...]:
-    if name in rig.RIG_EFFECTS:
-        return rig.nonlinear_parameters(name, kind)
-    return fx.nonlinear_parameters(name, kind)
-
-
-def columns(problem: Problem, effects: tuple[str, ...], theta: dict[str, float],
-            full: bool = False):
-    """Design matrix, labels and linear bounds for a model with ``effects``, on every row
-    (``full``) or on the fitted rows."""
-    base = problem.base
-    rows = slice(None) if full else problem.rows
-    inp = _inputs_on(problem, full)
-    branches = problem.branches if full else problem.fit_branches
-    free = base.free_columns(theta, rows)
-    n = free.shape[0]
-    cols = [free]
-    labels = [("baseline", n_) for n_ in base.free_names]
-    # the compliance scale stays within the catalog's spread: beyond it the data ask for an
-    # effect (or, for a stiffer gear, the nuisance report says so); left free only to ask
-    # whether something else than the scale is in the data
-    spread = baselines.STIFFNESS_SPREAD
-    scale = (0.0, np.inf) if problem.scale_free else (1 / (1 + spread), 1 / (1 - spread))
-    bounds = {"compliance_scale": scale,
-              "printed_reading": (0.0, 1 / (1 - spread)),
-              "scale_error": (-baselines.ANGLE_GAIN_LIMIT, baselines.ANGLE_GAIN_LIMIT)}
-    lower = [bounds.get(n_, (-np.inf, np.inf))[0] for n_ in base.free_names]
-    upper = [bounds.get(n_, (-np.inf, np.inf))[1] for n_ in base.free_names]
-
-    def add(effect: str, names, block, lo=-np.inf, hi=np.inf):
-        cols.append(block.reshape(n, -1))
-        labels.extend((effect, n_) for n_ in names)
-        lower.extend([lo] * len(names))
-        upper.extend([hi] * len(names))
-
-    factor = None
-    for name in effects:
-        th = {p.name: theta[key_of(name, p.name)] for p in parameters_of(name, problem.kind)}
-        if name in rig.RIG_EFFECTS:
-            names, block = rig.columns(name, problem.kind, inp, problem.step_position, th)
-            add(name, names, block)
-        elif name == "hysteresis":
-            z = _hysteresis_state(problem, inp["torque_Nm"], th, branches, rows)
-            if problem.hysteresis_series:
-                z = z - inp["torque_Nm"] / th["T_s"]
-            elif problem.hysteresis_through_gear:  # friction torque × the gear's compliance
-                z = z * problem.base.curve.K1 * baselines.catalog_compliance(
-                    problem.base.curve, inp["torque_Nm"], theta.get("catalog.corner_width", 0.0))
-            add(name, ["z_sat"], -z, 0.0)
-        elif name == "backlash":
-            torque = inp["torque_Nm"]
-            if problem.play_hold:
-                torque = torque - inp["branch_direction"] * (
-                    problem.play_hold * problem.scales["T0"])
-            add(name, ["lost_motion"], fx.backlash_twist(torque, 1.0, th["T_w"]), 0.0)
-        elif name == "housing_compliance":
-            add(name, ["compliance"], fx.progressive_twist(inp["torque_Nm"],
-                                                           problem.housing_knee), 0.0)
-        elif name in ("te_1x", "te_2x"):
-            order = te_order_of(name)
-            add(name, te_column_labels(problem, order), harmonic(problem, order, theta, full))
-            for k in overtones_of(problem, effects, name):
-                add(name, [f"sin_{k}x", f"cos_{k}x"], harmonic(problem, k, theta, full)[:, :2])
-        elif name == "low_load_efficiency":
-            f = laws.low_load_factor(inp["alpha"], th["c"], th["q"], inp["input_speed_rpm"],
-                                     th["s"], _viscosity(problem, effects, theta, inp),
-                                     problem.drag_viscosity_exponent, problem.low_load_flat)
-            factor = f if factor is None else factor * f
-        elif name == "temperature_dependence":
-            f = laws.temperature_factor(inp["temperature_C"], th["a"], th["b"],
-                                        laws.REFERENCE_TEMPERATURE_C, inp["input_speed_rpm"],
-                                        th["s"], th["boundary"], problem.viscosity_C,
-                                        problem.speed_loss, problem.temperature_band)
-            factor = f if factor is None else factor * f
-    X = np.column_stack(cols)
-    if factor is not None:  # η = η0·Ke(α)·F(t): the effects scale the whole efficiency
-        X = X * factor[:, None]
-    return X, labels, np.array(lower), np.array(upper)
-
-
-def _inputs_on(problem: Problem, full: bool) -> dict[str, np.ndarray]:
-    """The record's input columns on every row or on the fitted rows (these kept until
-    set_rows clears the cache: read only)."""
-    inputs = {k: v for k, v in problem.base.inputs.items() if np.ndim(v) == 1}
-    if full:
-        return inputs
-    key = ("inputs", id(problem.rows))
-    if key not in problem.cache:
-        problem.cache[key] = {k: v[problem.rows] for k, v in inputs.items()}
-    return problem.cache[key]
-
-
-def _hysteresis_state(problem: Problem, torque: np.ndarray, th: dict, branches, rows
-                      ) -> np.ndarray:
-    """The loop's state z (−1 … 1) on the rows: Bouc–Wen at the shape ``th``, or the
-    Preisach relay sum when ``problem.hysteresis_preisach`` holds its density; less the
-    loop's centre line when it is drawn about the catalog curve."""
-    if problem.hysteresis_preisach is not None:
-        return problem.preisach_plane.loop(torque, rows, *problem.hysteresis_preisach,
-                                           problem.hysteresis_centred)
-    # kept for the Jacobian's steps in the other shapes (the same loop again); the rows and
-    # their branches change only with set_rows, which clears the cache
-    key = (isinstance(rows, slice), problem.hysteresis_centred,
-           *(float(th[k]) for k in ("T_s", "rho", "n", "z0", "first_scale")))
-    kept = problem.cache.setdefault("hysteresis", {})
-    if key not in kept:
-        z = fx.hysteresis_state(torque, th["T_s"], th["rho"], th["n"], branches, th["z0"],
-                                th["first_scale"])
-        if problem.hysteresis_centred:
-            z = z - fx.loop_centre(torque, th["T_s"], th["rho"], th["n"],
-                                   problem.scales["T0"])
-        if len(kept) >= _LOOPS_KEPT:
-            del kept[next(iter(kept))]
-        kept[key] = z
-    return kept[key]
-
-
-_LOOPS_KEPT = 8
-
-
-def _viscosity(problem: Problem, effects: tuple[str, ...], theta: dict, inp: dict
-               ) -> np.ndarray | None:
-    """ν(t)/ν(20 °C) of the named temperature law on the rows of ``inp``, for a drag that
-    grows with viscosity."""
-    if not problem.drag_viscosity_exponent or "temperature_dependence" not in effects:
-        return None
-    return laws.temperature_ratio(inp["temperature_C"],
-                                  theta[key_of("temperature_dependence", "b")],
-                                  laws.REFERENCE_TEMPERATURE_C, problem.viscosity_C,
-                                  problem.temperature_band)
-
-
 # --------------------------------------------------------------------------- fitting
 def _transform(p: fx.Parameter, scale: float):
     lo, hi = p.lower * scale, p.upper * scale
@@ -411,11 +269,18 @@ def fit_model(problem: Problem, effects: tuple[str, ...],
                         params, scale)
         if rss_of(again) < rss_of(theta):
             theta = again
-    # a shape held at a lower bound of 0 (a speed exponent of 0) is the simpler model's
-    # value, not a parameter in use
-    in_use = [k for k in keys if not (params[k].lower == 0.0 and theta[k] <= 1e-6 * scale[k]
-                                      * params[k].upper)]
-    return finish(problem, effects, theta, len(in_use))
+    return finish(problem, effects, theta, shapes_in_use(problem, effects, theta))
+
+
+def shapes_in_use(problem: Problem, effects: tuple[str, ...], theta: dict[str, float],
+                  skip: str = "") -> int:
+    """How many of the model's shapes are in use (those of effect ``skip`` left out): a
+    shape held at a lower bound of 0 (a speed exponent of 0) is the simpler model's value,
+    not a parameter in use."""
+    params = nonlinear(problem.kind, effects)
+    return sum(1 for k, p in params.items()
+               if not (skip and k.startswith(f"{skip}."))
+               and not (p.lower == 0.0 and theta[k] <= 1e-6 * problem.scales[p.scale] * p.upper))
 
 
 def best_setting(problem: Problem, fit: Fit, current, settings, apply) -> tuple[Fit, object]:

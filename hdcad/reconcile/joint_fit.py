@@ -12,7 +12,8 @@ from scipy.optimize import least_squares
 
 from . import joint
 from .baseline import STIFFNESS_SPREAD
-from .fitting import Fit, Problem, columns, finish, nonlinear
+from .fitting import Fit, Problem, finish
+from .model_columns import columns, nonlinear
 from .harmonics import TE_ORDER_MAX, te_basis, te_order_of, te_width
 from .gates import bic_best, effective_n
 

@@ -15,7 +15,10 @@ import numpy as np
 from scipy.optimize import least_squares
 
 from . import effects as fx
-from .fitting import POLISH_TOL, Fit, Problem, best_setting, columns, finish, solve
+from . import plays
+from .bounded import solve
+from .fitting import POLISH_TOL, Fit, Problem, best_setting, finish, shapes_in_use
+from .model_columns import columns
 from .gates import bic_best, effective_n
 
 THROUGH_GEAR = ("hysteresis: a friction torque in parallel with the gear's spring (its twist "
@@ -137,6 +140,50 @@ def refine_preisach(problem: Problem, fit: Fit) -> Fit:
                          + (", through the gear's compliance" if form[1] else "")
                          + f", fits {math.sqrt(fit.rss / best.rss):.2f}× closer than the "
                          "Bouc–Wen loop (BIC)")
+    return best
+
+
+PLAYS = ("hysteresis: a sum of {k} friction elements (an Iwan model: slip torques "
+         "{lo:.3g} … {hi:.3g} N·m, weights fitted)")
+
+
+def refine_plays(problem: Problem, fit: Fit) -> Fit:
+    """A named hysteresis as a sum of friction elements with fixed slip torques, weighted
+    freely (:mod:`.plays`), in whichever of the loop's forms (about its own backbone or the
+    catalog curve, with a constant compliance or through the gear's) fits best, kept in
+    place of the loop found so far (Bouc–Wen or Preisach) when BIC (effective sample size
+    N/τ) prefers it. The weights are amplitudes, so no shape is fitted: a loop whose
+    branches follow none of the parametric forms is followed as closely as the slip torques
+    resolve it. Leaves ``problem.hysteresis_plays`` set when it is kept."""
+    if (problem.kind != "torsion" or "hysteresis" not in fit.effects
+            or problem.base.curve is None or problem.hysteresis_series
+            or problem.branches is None):
+        return fit
+    named = (problem.hysteresis_centred, problem.hysteresis_through_gear,
+             problem.hysteresis_preisach)
+    shapes = shapes_in_use(problem, fit.effects, fit.theta, skip="hysteresis")
+    problem.hysteresis_preisach, problem.hysteresis_plays = None, True
+    trials = []
+    for form in itertools.product((False, True), repeat=2):
+        problem.hysteresis_centred, problem.hysteresis_through_gear = form
+        trials.append((finish(problem, fit.effects, fit.theta, shapes), form))
+    best, form = min(trials, key=lambda t: t[0].rss)
+    n_eff = effective_n(problem, best.residual(problem))
+    if not bic_best({False: (fit.rss, fit.n_params), True: (best.rss, best.n_params)}, n_eff):
+        (problem.hysteresis_centred, problem.hysteresis_through_gear,
+         problem.hysteresis_preisach) = named
+        problem.hysteresis_plays = False
+        return fit
+    problem.hysteresis_centred, problem.hysteresis_through_gear = form
+    # the earlier loop's notes describe a loop no longer in the model
+    problem.notes[:] = [n for n in problem.notes if not n.startswith(
+        (f"{CENTRED} fits", f"{THROUGH_GEAR} fits", PREISACH.split("(")[0]))]
+    r = plays.thresholds(problem.scales["T0"])
+    problem.notes.append(PLAYS.format(k=len(r), lo=r[0], hi=r[-1])
+                         + (", about the catalog curve" if form[0] else "")
+                         + (", through the gear's compliance" if form[1] else "")
+                         + f", fits {math.sqrt(fit.rss / best.rss):.2f}× closer than the "
+                         "parametric loop (BIC)")
     return best
 
 

@@ -8,7 +8,10 @@ import numpy as np
 
 from . import efficiency_laws as laws
 from . import effects as fx
-from .fitting import Fit, Problem, key_of, parameters_of
+from . import plays
+from .effects import key_of
+from .fitting import Fit, Problem
+from .model_columns import parameters_of
 from .harmonics import TE_LABELS, frames_of, legendre, te_order_of
 from .rig import RIG_EFFECTS, TORQUE_GAIN_KEY
 
@@ -89,9 +92,30 @@ PREISACH_FORM = ("θ = θ_catalog(T) + z_sat·f(T history)  (Preisach relay sum:
                  "torques × normally spread relay centres; Mayergoyz 1991)")
 
 
+PLAYS_FORM = ("θ = θ_catalog(T) − Σ a_k·s_k(T history)/r_k, a_k ≥ 0  (friction elements "
+              "with slip torques r_k: stop operators, s_k = T − p_k with the play p_k kept "
+              "within r_k of T; Iwan 1966)")
+
+
+def _plays(problem: Problem, b: dict[str, float]) -> dict[str, tuple[float, str]]:
+    """A sum of friction elements: its saturation, loss at zero torque and each element in
+    use (slip torque and weight)."""
+    t0 = problem.scales["T0"]
+    r = plays.thresholds(t0)
+    a = np.array([b[f"a_{k}"] for k in range(len(r))])
+    out = {"z_sat": (float(a.sum()), "rad"), "T0": (t0, "N·m"),
+           "loss_at_T0": (plays.loss_at_zero(a, r, t0), "rad")}
+    for k in np.flatnonzero(a):
+        out[f"slip_torque_{k}"] = (float(r[k]), "N·m")
+        out[f"weight_{k}"] = (float(a[k]), "rad")
+    return out
+
+
 def effect_form(problem: Problem, effect: str) -> str:
     """The formula of the effect as the final model has it (the catalog of effects gives
     the form it is named with)."""
+    if effect == "hysteresis" and problem.hysteresis_plays:
+        return PLAYS_FORM
     if effect == "hysteresis" and problem.hysteresis_preisach is not None:
         return PREISACH_FORM
     return fx.EFFECTS[effect].form
@@ -103,7 +127,9 @@ def effect_params(problem: Problem, fit: Fit, effect: str) -> dict[str, dict]:
     th = {p.name: fit.theta[key_of(effect, p.name)]
           for p in parameters_of(effect, problem.kind)}
     out: dict[str, tuple[float, str]] = {}
-    if effect == "hysteresis" and problem.hysteresis_preisach is not None:
+    if effect == "hysteresis" and problem.hysteresis_plays:
+        out = _plays(problem, b)
+    elif effect == "hysteresis" and problem.hysteresis_preisach is not None:
         w, spread, c = problem.hysteresis_preisach
         out = {"z_sat": (b["z_sat"], "rad"), "slip_torque_median": (w, "N·m"),
                "slip_torque_log_spread": (spread, "-"), "centre_spread": (c, "N·m"),

@@ -12,12 +12,17 @@ from __future__ import annotations
 
 import numpy as np
 
-from .baseline import STIFFNESS_SPREAD
+from .baseline import STIFFNESS_SPREAD, catalog_twist
 from .fitting import Fit, Problem
 
 # |correlation| of temperature with test time above which a temperature effect and a drift
 # of the rig with time cannot be told apart.
 TIME_TEMPERATURE_CORRELATION = 0.8
+
+# A gear softer than the catalog by at least this share, within the spread, is also read as
+# a series spring (a housing spring of under 1 % of the gear's compliance is not worth a
+# line in the report).
+SOFTER_READING_MIN = 0.01
 
 # Rig readings that a test of this kind cannot tell from the named gear effect, whatever the
 # data: the same physics sits in the rig's torque or angle path (Seed 000 p.020: the twist
@@ -148,6 +153,21 @@ def undecided(named: tuple[str, ...], rivals: tuple[str, ...]) -> list[dict]:
                      "separates them decides)"}]
 
 
+def _spring_reading(problem: Problem, stiffness: float, within: bool) -> dict:
+    """A gear softer than the catalog, read as a gear at its catalog
+    stiffness with a series spring that adds the same twist at the test's largest torque
+    (the spring's compliance is the same at every torque, the scale's follows the curve:
+    at these data the two read alike)."""
+    torque = float(np.max(np.abs(problem.base.inputs["torque_Nm"])))
+    secant = float(catalog_twist(problem.base.curve, np.array([torque]), 0.0)[0]) / torque
+    spring = stiffness / ((1 - stiffness) * secant)
+    return {"effects": ["housing_compliance"], "nuisance": "stiffness_scale",
+            "text": f"the gear reads {1 - stiffness:.1%} softer than the catalog"
+                    + (", within its spread" if within else "") + "; a gear at its catalog stiffness with a series spring (housing, "
+                    f"shafts) of about {spring:.3g} N·m/rad reads the same: the housing's own "
+                    "stiffness decides"}
+
+
 def equivalent(problem: Problem, fit: Fit, named: tuple[str, ...], found: list[dict]
                ) -> list[dict]:
     """Readings the data cannot tell apart from what was named or fitted."""
@@ -161,6 +181,9 @@ def equivalent(problem: Problem, fit: Fit, named: tuple[str, ...], found: list[d
                             "catalog; a series spring (housing, shafts) of about "
                             f"{k1 * stiffness['value'] / (1 - stiffness['value']):.3g} N·m/rad "
                             "reads the same"})
+    if problem.kind == "torsion" and stiffness and "housing_compliance" not in named \
+            and stiffness["value"] < 1 - SOFTER_READING_MIN and problem.base.curve is not None:
+        out.append(_spring_reading(problem, stiffness["value"], stiffness["within_spread"]))
     if problem.kind == "transmission" and "te_1x" in named:
         out.append({"effects": ["te_1x"], "measurement": "encoder_eccentricity",
                     "text": "once per WG revolution: the gear's transmission error, or an "

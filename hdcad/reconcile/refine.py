@@ -18,12 +18,13 @@ import numpy as np
 from scipy.optimize import minimize_scalar
 
 from . import efficiency_laws as laws
-from .fitting import Fit, Problem, best_setting, finish, fit_model, nonlinear
+from .fitting import Fit, Problem, best_setting, finish, fit_model
+from .model_columns import nonlinear
 from .frames import refine_frames
 from .gates import BIC_MIN, bic_best, bic_gain, effective_n
 from .harmonics import TE_ORDER_MAX
 from .joint_fit import refine_spring
-from .loops import refine_hysteresis, refine_preisach
+from .loops import refine_hysteresis, refine_plays, refine_preisach
 
 _SPEED_LOSS_BOUNDS = (-0.5, 0.9)  # as the viscous share a of the temperature law
 # exponent k of a drag ∝ ν^k: 0 (no coupling) … 2 (Petroff's viscous torque is ∝ ν; a
@@ -106,13 +107,14 @@ def refine(problem: Problem, fit: Fit) -> Fit:
     """The named model's final form: the named errors' frames, then the joint on the catalog
     curve where the twist leaves its first segment (vibration); else the TE's overtones and
     modulation order, the viscosity law, the loop's Bouc–Wen form, a play held by friction,
-    then a Preisach relay sum in place of the Bouc–Wen loop where BIC prefers it."""
+    then a Preisach relay sum in place of the Bouc–Wen loop, and a sum of friction elements
+    in place of either, where BIC prefers them."""
     fit = refine_frames(problem, fit)
     curved = refine_spring(problem, fit)
     if curved is fit:
         fit = refine_hysteresis(problem, refine_viscosity(problem, refine_low_load(
             problem, refine_te_order(problem, refine_te_overtones(problem, fit)))))
-        return refine_preisach(problem, refine_play(problem, fit))
+        return refine_plays(problem, refine_preisach(problem, refine_play(problem, fit)))
     return curved
 
 

@@ -33,7 +33,8 @@ from dataclasses import replace
 
 from . import effects as fx
 from . import rig, springs
-from .fitting import Fit, Problem, finish, fit_model, nonlinear
+from .fitting import Fit, Problem, finish, fit_model
+from .model_columns import nonlinear
 from .gates import (BIC_MIN, EXPLAINED_MIN, GATE_NOTE, Candidate, Gate, bic_gain, effective_n,
                     gate, has_evidence, round_noise)
 from .loops import THROUGH_GEAR, preisach_forms, use_preisach

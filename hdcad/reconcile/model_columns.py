@@ -1,0 +1,192 @@
+"""The columns of a model: the baseline's free columns, the measurement-chain effects' and the
+gear effects', with the linear amplitudes' labels and bounds.
+
+A model is linear in its amplitudes (a loop's saturation twist, a play's lost motion, a
+spring's compliance, a harmonic's sine and cosine parts, the catalog curve's scale and
+offset) and nonlinear in its shapes (widths, loop parameters, the corner width of the
+catalog curve): :func:`columns` gives the design matrix at a shape ``theta``, which
+:mod:`.fitting` solves for the amplitudes and searches over the shapes. The efficiency
+effects scale the whole efficiency (η = η0·Ke(α)·F(t)), so they multiply every column.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from . import baseline as baselines
+from . import efficiency_laws as laws
+from . import effects as fx
+from . import plays, rig
+from .effects import key_of
+from .harmonics import harmonic, overtones_of, te_column_labels, te_order_of
+
+if TYPE_CHECKING:
+    from .fitting import Problem
+
+
+def nonlinear(kind: str, effects: tuple[str, ...]) -> dict[str, fx.Parameter]:
+    """Nonlinear parameters of a model: the baseline's nuisances and the effects' shapes."""
+    out: dict[str, fx.Parameter] = {f"catalog.{p.name}": p
+                                    for p in baselines.NUISANCE.get(kind, ())}
+    for name in effects:
+        for p in parameters_of(name, kind):
+            out.setdefault(key_of(name, p.name), p)
+    return out
+
+
+def parameters_of(name: str, kind: str) -> tuple[fx.Parameter, ...]:
+    if name in rig.RIG_EFFECTS:
+        return rig.nonlinear_parameters(name, kind)
+    return fx.nonlinear_parameters(name, kind)
+
+
+def columns(problem: Problem, effects: tuple[str, ...], theta: dict[str, float],
+            full: bool = False):
+    """Design matrix, labels and linear bounds for a model with ``effects``, on every row
+    (``full``) or on the fitted rows."""
+    base = problem.base
+    rows = slice(None) if full else problem.rows
+    inp = _inputs_on(problem, full)
+    branches = problem.branches if full else problem.fit_branches
+    free = base.free_columns(theta, rows)
+    n = free.shape[0]
+    cols = [free]
+    labels = [("baseline", n_) for n_ in base.free_names]
+    # the compliance scale stays within the catalog's spread: beyond it the data ask for an
+    # effect (or, for a stiffer gear, the nuisance report says so); left free only to ask
+    # whether something else than the scale is in the data
+    spread = baselines.STIFFNESS_SPREAD
+    scale = (0.0, np.inf) if problem.scale_free else (1 / (1 + spread), 1 / (1 - spread))
+    bounds = {"compliance_scale": scale,
+              "printed_reading": (0.0, 1 / (1 - spread)),
+              "scale_error": (-baselines.ANGLE_GAIN_LIMIT, baselines.ANGLE_GAIN_LIMIT)}
+    lower = [bounds.get(n_, (-np.inf, np.inf))[0] for n_ in base.free_names]
+    upper = [bounds.get(n_, (-np.inf, np.inf))[1] for n_ in base.free_names]
+
+    def add(effect: str, names, block, lo=-np.inf, hi=np.inf):
+        cols.append(block.reshape(n, -1))
+        labels.extend((effect, n_) for n_ in names)
+        lower.extend([lo] * len(names))
+        upper.extend([hi] * len(names))
+
+    factor = None
+    for name in effects:
+        th = {p.name: theta[key_of(name, p.name)] for p in parameters_of(name, problem.kind)}
+        if name in rig.RIG_EFFECTS:
+            names, block = rig.columns(name, problem.kind, inp, problem.step_position, th)
+            add(name, names, block)
+        elif name == "hysteresis" and problem.hysteresis_plays:
+            S = _stop_states(problem, inp["torque_Nm"], branches, rows)
+            if problem.hysteresis_through_gear:
+                S = S * _through_gear(problem, inp["torque_Nm"], theta)[:, None]
+            add(name, [f"a_{k}" for k in range(S.shape[1])], -S, 0.0)
+        elif name == "hysteresis":
+            z = _hysteresis_state(problem, inp["torque_Nm"], th, branches, rows)
+            if problem.hysteresis_series:
+                z = z - inp["torque_Nm"] / th["T_s"]
+            elif problem.hysteresis_through_gear:
+                z = z * _through_gear(problem, inp["torque_Nm"], theta)
+            add(name, ["z_sat"], -z, 0.0)
+        elif name == "backlash":
+            torque = inp["torque_Nm"]
+            if problem.play_hold:
+                torque = torque - inp["branch_direction"] * (
+                    problem.play_hold * problem.scales["T0"])
+            add(name, ["lost_motion"], fx.backlash_twist(torque, 1.0, th["T_w"]), 0.0)
+        elif name == "housing_compliance":
+            add(name, ["compliance"], fx.progressive_twist(inp["torque_Nm"],
+                                                           problem.housing_knee), 0.0)
+        elif name in ("te_1x", "te_2x"):
+            order = te_order_of(name)
+            add(name, te_column_labels(problem, order), harmonic(problem, order, theta, full))
+            for k in overtones_of(problem, effects, name):
+                add(name, [f"sin_{k}x", f"cos_{k}x"], harmonic(problem, k, theta, full)[:, :2])
+        elif name == "low_load_efficiency":
+            f = laws.low_load_factor(inp["alpha"], th["c"], th["q"], inp["input_speed_rpm"],
+                                     th["s"], _viscosity(problem, effects, theta, inp),
+                                     problem.drag_viscosity_exponent, problem.low_load_flat)
+            factor = f if factor is None else factor * f
+        elif name == "temperature_dependence":
+            f = laws.temperature_factor(inp["temperature_C"], th["a"], th["b"],
+                                        laws.REFERENCE_TEMPERATURE_C, inp["input_speed_rpm"],
+                                        th["s"], th["boundary"], problem.viscosity_C,
+                                        problem.speed_loss, problem.temperature_band)
+            factor = f if factor is None else factor * f
+    X = np.column_stack(cols)
+    if factor is not None:  # η = η0·Ke(α)·F(t): the effects scale the whole efficiency
+        X = X * factor[:, None]
+    return X, labels, np.array(lower), np.array(upper)
+
+
+def _inputs_on(problem: Problem, full: bool) -> dict[str, np.ndarray]:
+    """The record's input columns on every row or on the fitted rows (these kept until
+    set_rows clears the cache: read only)."""
+    inputs = {k: v for k, v in problem.base.inputs.items() if np.ndim(v) == 1}
+    if full:
+        return inputs
+    key = ("inputs", id(problem.rows))
+    if key not in problem.cache:
+        problem.cache[key] = {k: v[problem.rows] for k, v in inputs.items()}
+    return problem.cache[key]
+
+
+def _hysteresis_state(problem: Problem, torque: np.ndarray, th: dict, branches, rows
+                      ) -> np.ndarray:
+    """The loop's state z (−1 … 1) on the rows: Bouc–Wen at the shape ``th``, or the
+    Preisach relay sum when ``problem.hysteresis_preisach`` holds its density; less the
+    loop's centre line when it is drawn about the catalog curve."""
+    if problem.hysteresis_preisach is not None:
+        return problem.preisach_plane.loop(torque, rows, *problem.hysteresis_preisach,
+                                           problem.hysteresis_centred)
+    # kept for the Jacobian's steps in the other shapes (the same loop again); the rows and
+    # their branches change only with set_rows, which clears the cache
+    key = (isinstance(rows, slice), problem.hysteresis_centred,
+           *(float(th[k]) for k in ("T_s", "rho", "n", "z0", "first_scale")))
+    kept = problem.cache.setdefault("hysteresis", {})
+    if key not in kept:
+        z = fx.hysteresis_state(torque, th["T_s"], th["rho"], th["n"], branches, th["z0"],
+                                th["first_scale"])
+        if problem.hysteresis_centred:
+            z = z - fx.loop_centre(torque, th["T_s"], th["rho"], th["n"],
+                                   problem.scales["T0"])
+        if len(kept) >= _LOOPS_KEPT:
+            del kept[next(iter(kept))]
+        kept[key] = z
+    return kept[key]
+
+
+_LOOPS_KEPT = 8
+
+
+def _through_gear(problem: Problem, torque: np.ndarray, theta: dict) -> np.ndarray:
+    """K1 × the catalog curve's local compliance [-]: a friction torque's twist through the
+    gear's spring, relative to its twist on the first segment."""
+    return problem.base.curve.K1 * baselines.catalog_compliance(
+        problem.base.curve, torque, theta.get("catalog.corner_width", 0.0))
+
+
+def _stop_states(problem: Problem, torque: np.ndarray, branches, rows) -> np.ndarray:
+    """The friction elements' states s/r (n × K) on the rows (:mod:`.plays`), less their
+    centre lines when the loop is drawn about the catalog curve; kept until set_rows."""
+    key = ("plays", isinstance(rows, slice), problem.hysteresis_centred)
+    if key not in problem.cache:
+        r = plays.thresholds(problem.scales["T0"])
+        S = plays.stop_states(torque, r, branches)
+        if problem.hysteresis_centred:
+            S = S - plays.centre_lines(torque, r, problem.scales["T0"])
+        problem.cache[key] = S
+    return problem.cache[key]
+
+
+def _viscosity(problem: Problem, effects: tuple[str, ...], theta: dict, inp: dict
+               ) -> np.ndarray | None:
+    """ν(t)/ν(20 °C) of the named temperature law on the rows of ``inp``, for a drag that
+    grows with viscosity."""
+    if not problem.drag_viscosity_exponent or "temperature_dependence" not in effects:
+        return None
+    return laws.temperature_ratio(inp["temperature_C"],
+                                  theta[key_of("temperature_dependence", "b")],
+                                  laws.REFERENCE_TEMPERATURE_C, problem.viscosity_C,
+                                  problem.temperature_band)
