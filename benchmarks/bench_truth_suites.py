@@ -128,7 +128,8 @@ def summary(rows: list[dict], label: str) -> None:
     shrinks = [r["shrink"] for r in rows if "shrink" in r and np.isfinite(r["shrink"])]
     ok_ratio = sum(x <= RMSE_FACTOR for x in ratios) / len(ratios) if ratios else np.nan
     print(f"{label:16s} single-first {fmt('first_right')} | pair-both {fmt('both')} | "
-          f"or-read {fmt('both_or_read')} | false-alarm {fmt('false_alarm')} | wrong-2nd {fmt('wrong_second')} | "
+          f"or-read {fmt('both_or_read')} | false-alarm {fmt('false_alarm')} | "
+          f"wrong-2nd {fmt('wrong_second')} | "
           f"exact {fmt('exact')} | rig-named {fmt('rig_right')} | equiv-both {fmt('both_readings')} | "
           f"rmse≤1.2σ {ok_ratio:6.1%} (median {statistics.median(ratios) if ratios else np.nan:.2f}) | "
           f"shrink {statistics.median(shrinks) if shrinks else np.nan:6.1%}")

@@ -2,8 +2,8 @@
 
 A model is the baseline's free columns (nuisances of the catalog: offset, compliance scale,
 efficiency level), the columns of the measurement-chain effects (:mod:`.rig`) and those of
-the gear effects (:mod:`.effects`), put together by :mod:`.model_columns`. Amplitudes enter linearly and are solved by linear least
-squares; shapes (widths, loop parameters, damping, the corner width of the catalog curve)
+the gear effects (:mod:`.effects`), put together by :mod:`.model_columns`. Amplitudes
+enter linearly and are solved by linear least squares; shapes (widths, loop parameters, damping, the corner width of the catalog curve)
 are fitted by ``scipy.optimize.least_squares`` over the linear solution (variable
 projection, its Jacobian from :mod:`.varpro`), started from a grid and from the values of
 simpler models (multi-start).

@@ -163,7 +163,8 @@ def _spring_reading(problem: Problem, stiffness: float, within: bool) -> dict:
     spring = stiffness / ((1 - stiffness) * secant)
     return {"effects": ["housing_compliance"], "nuisance": "stiffness_scale",
             "text": f"the gear reads {1 - stiffness:.1%} softer than the catalog"
-                    + (", within its spread" if within else "") + "; a gear at its catalog stiffness with a series spring (housing, "
+                    + (", within its spread" if within else "")
+                    + "; a gear at its catalog stiffness with a series spring (housing, "
                     f"shafts) of about {spring:.3g} N·m/rad reads the same: the housing's own "
                     "stiffness decides"}
 
