@@ -3,10 +3,11 @@
 A model is the baseline's free columns (nuisances of the catalog: offset, compliance scale,
 efficiency level), the columns of the measurement-chain effects (:mod:`.rig`) and those of
 the gear effects (:mod:`.effects`), put together by :mod:`.model_columns`. Amplitudes
-enter linearly and are solved by linear least squares; shapes (widths, loop parameters, damping, the corner width of the catalog curve)
-are fitted by ``scipy.optimize.least_squares`` over the linear solution (variable
-projection, its Jacobian from :mod:`.varpro`), started from a grid and from the values of
-simpler models (multi-start).
+enter linearly and are solved by linear least squares; shapes (widths, loop parameters,
+damping, the corner width of the catalog curve) are fitted by
+``scipy.optimize.least_squares`` over the linear solution (variable projection, its
+Jacobian from :mod:`.varpro`), started from a grid and from the values of simpler models
+(multi-start).
 
 Rows flagged as gross outliers are left out of the fit (a hard-redescending robust loss).
 """
@@ -269,18 +270,11 @@ def fit_model(problem: Problem, effects: tuple[str, ...],
                         params, scale)
         if rss_of(again) < rss_of(theta):
             theta = again
-    return finish(problem, effects, theta, shapes_in_use(problem, effects, theta))
-
-
-def shapes_in_use(problem: Problem, effects: tuple[str, ...], theta: dict[str, float],
-                  skip: str = "") -> int:
-    """How many of the model's shapes are in use (those of effect ``skip`` left out): a
-    shape held at a lower bound of 0 (a speed exponent of 0) is the simpler model's value,
-    not a parameter in use."""
-    params = nonlinear(problem.kind, effects)
-    return sum(1 for k, p in params.items()
-               if not (skip and k.startswith(f"{skip}."))
-               and not (p.lower == 0.0 and theta[k] <= 1e-6 * problem.scales[p.scale] * p.upper))
+    # a shape held at a lower bound of 0 (a speed exponent of 0) is the simpler model's
+    # value, not a parameter in use
+    in_use = [k for k in keys if not (params[k].lower == 0.0 and theta[k] <= 1e-6 * scale[k]
+                                      * params[k].upper)]
+    return finish(problem, effects, theta, len(in_use))
 
 
 def best_setting(problem: Problem, fit: Fit, current, settings, apply) -> tuple[Fit, object]:

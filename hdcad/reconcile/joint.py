@@ -187,8 +187,8 @@ def respond(excitation: np.ndarray, dt: float, spring: Spring, J: float, c: floa
         v1 = p10 * x + p11 * v + b0 * e0 + b1 * e1 + o1
         end = x1 - e1
         a = end if end >= 0 else -end
-        if (0 if a <= th1 else (1 if a <= th2 else 2)) != seg:  # crosses a corner: the
-            # segment of the step's mid-twist
+        if (0 if a <= th1 else (1 if a <= th2 else 2)) != seg:
+            # the step crosses a corner: the segment of its mid-twist
             mid = 0.5 * (d + end)
             seg = _segment(mid, th1, th2)
             p00, p01, p10, p11, a0, b0, a1, b1, o0, o1 = signed[seg][mid < 0]

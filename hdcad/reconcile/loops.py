@@ -17,7 +17,7 @@ from scipy.optimize import least_squares
 from . import effects as fx
 from . import plays
 from .bounded import solve
-from .fitting import POLISH_TOL, Fit, Problem, best_setting, finish, shapes_in_use
+from .fitting import POLISH_TOL, Fit, Problem, best_setting, finish
 from .model_columns import columns
 from .gates import bic_best, effective_n
 
@@ -80,10 +80,7 @@ def preisach_forms(problem: Problem, fit: Fit) -> list[tuple[Fit, tuple, tuple]]
     found it."""
     t0 = problem.scales["T0"]
     scale = np.array([t0, 1.0, t0])
-    # the fit's shapes in use (a play's holding torque included), the loop's five Bouc–Wen
-    # shapes replaced by the density's three
-    bw_shapes = len(fx.nonlinear_parameters("hysteresis", problem.kind))
-    shapes = fit.n_params - int(np.count_nonzero(fit.beta)) - bw_shapes + len(scale)
+    shapes = _shapes_beside_loop(problem, fit) + len(scale)  # the density's three
     named = (problem.hysteresis_centred, problem.hysteresis_through_gear,
              problem.hysteresis_preisach)
     residual = _density_residual(problem, fit, scale)
@@ -131,16 +128,31 @@ def refine_preisach(problem: Problem, fit: Fit) -> Fit:
     if not bic_best({False: (fit.rss, fit.n_params), True: (best.rss, best.n_params)}, n_eff):
         return fit
     use_preisach(problem, density, form)
-    # the Bouc–Wen loop's form notes describe a loop no longer in the model
-    problem.notes[:] = [n for n in problem.notes
-                        if not n.startswith((f"{CENTRED} fits", f"{THROUGH_GEAR} fits"))]
     w, s, c = density
-    problem.notes.append(PREISACH.format(w=w, s=s, c=c)
-                         + (", about the catalog curve" if form[0] else "")
-                         + (", through the gear's compliance" if form[1] else "")
-                         + f", fits {math.sqrt(fit.rss / best.rss):.2f}× closer than the "
-                         "Bouc–Wen loop (BIC)")
+    _replace_loop_notes(problem, PREISACH.format(w=w, s=s, c=c), form, fit, best,
+                        "the Bouc–Wen loop")
     return best
+
+
+def _shapes_beside_loop(problem: Problem, fit: Fit) -> int:
+    """The parameters of ``fit`` other than its amplitudes and its loop's shapes (the Bouc–Wen
+    loop's five or the Preisach density's three): the other effects' shapes in use and the
+    terms a refinement added (a play's holding torque)."""
+    loop = (3 if problem.hysteresis_preisach is not None
+            else len(fx.nonlinear_parameters("hysteresis", problem.kind)))
+    return fit.n_params - int(np.count_nonzero(fit.beta)) - loop
+
+
+def _replace_loop_notes(problem: Problem, text: str, form: tuple, fit: Fit, best: Fit,
+                        than: str) -> None:
+    """Note the loop's new form ``text`` in ``form`` and how much closer ``best`` fits than
+    ``fit``; the earlier form's notes describe a loop no longer in the model."""
+    problem.notes[:] = [n for n in problem.notes if not n.startswith(
+        (f"{CENTRED} fits", f"{THROUGH_GEAR} fits", PREISACH.split("(")[0]))]
+    problem.notes.append(text + (", about the catalog curve" if form[0] else "")
+                         + (", through the gear's compliance" if form[1] else "")
+                         + f", fits {math.sqrt(fit.rss / best.rss):.2f}× closer than "
+                         f"{than} (BIC)")
 
 
 PLAYS = ("hysteresis: a sum of {k} friction elements (an Iwan model: slip torques "
@@ -161,7 +173,7 @@ def refine_plays(problem: Problem, fit: Fit) -> Fit:
         return fit
     named = (problem.hysteresis_centred, problem.hysteresis_through_gear,
              problem.hysteresis_preisach)
-    shapes = shapes_in_use(problem, fit.effects, fit.theta, skip="hysteresis")
+    shapes = _shapes_beside_loop(problem, fit)  # the weights are amplitudes, counted by finish
     problem.hysteresis_preisach, problem.hysteresis_plays = None, True
     trials = []
     for form in itertools.product((False, True), repeat=2):
@@ -175,15 +187,9 @@ def refine_plays(problem: Problem, fit: Fit) -> Fit:
         problem.hysteresis_plays = False
         return fit
     problem.hysteresis_centred, problem.hysteresis_through_gear = form
-    # the earlier loop's notes describe a loop no longer in the model
-    problem.notes[:] = [n for n in problem.notes if not n.startswith(
-        (f"{CENTRED} fits", f"{THROUGH_GEAR} fits", PREISACH.split("(")[0]))]
     r = plays.thresholds(problem.scales["T0"])
-    problem.notes.append(PLAYS.format(k=len(r), lo=r[0], hi=r[-1])
-                         + (", about the catalog curve" if form[0] else "")
-                         + (", through the gear's compliance" if form[1] else "")
-                         + f", fits {math.sqrt(fit.rss / best.rss):.2f}× closer than the "
-                         "parametric loop (BIC)")
+    _replace_loop_notes(problem, PLAYS.format(k=len(r), lo=r[0], hi=r[-1]), form, fit, best,
+                        "the parametric loop")
     return best
 
 

@@ -47,15 +47,11 @@ def stop_states(torque_Nm: np.ndarray, r_Nm: np.ndarray,
     the torque makes no minor loops)."""
     torque = np.asarray(torque_Nm, dtype=float)
     r = np.asarray(r_Nm, dtype=float)
-    starts, direction = branches
+    starts, direction = branches  # the first branch starts at row 0
     bounds = list(starts) + [len(torque)]
-    if not bounds or bounds[0] != 0:
-        bounds = [0] + bounds
     out = np.empty((len(torque), len(r)))
-    play = np.full(len(r), torque[0]) if len(torque) else np.zeros(len(r))
+    play = np.full(len(r), torque[0])
     for s, e in zip(bounds[:-1], bounds[1:]):
-        if e <= s:
-            continue
         seg = torque[s:e + 1]  # to the next turning point, where this branch ends
         reached = seg[0] + direction * np.maximum.accumulate(direction * (seg - seg[0]))
         if direction > 0:
