@@ -154,10 +154,10 @@ def undecided(named: tuple[str, ...], rivals: tuple[str, ...]) -> list[dict]:
 
 
 def _spring_reading(problem: Problem, stiffness: float, within: bool) -> dict:
-    """A gear softer than the catalog, read as a gear at its catalog
-    stiffness with a series spring that adds the same twist at the test's largest torque
-    (the spring's compliance is the same at every torque, the scale's follows the curve:
-    at these data the two read alike)."""
+    """A gear softer than the catalog, read as a gear at its catalog stiffness with a series
+    spring that adds the same twist at the test's largest torque (the spring's compliance is
+    the same at every torque, the scale's follows the curve: at these data the two read
+    alike)."""
     torque = float(np.max(np.abs(problem.base.inputs["torque_Nm"])))
     secant = float(catalog_twist(problem.base.curve, np.array([torque]), 0.0)[0]) / torque
     spring = stiffness / ((1 - stiffness) * secant)
@@ -174,17 +174,13 @@ def equivalent(problem: Problem, fit: Fit, named: tuple[str, ...], found: list[d
     """Readings the data cannot tell apart from what was named or fitted."""
     out = []
     stiffness = next((n for n in found if n["name"] == "stiffness_scale"), None)
-    if problem.kind == "torsion" and stiffness and stiffness["value"] < 1 - STIFFNESS_SPREAD \
-            and "housing_compliance" in named:
-        k1 = problem.base.figures["K1_Nm_per_rad"][0]
-        out.append({"effects": ["housing_compliance"], "nuisance": "stiffness_scale",
-                    "text": f"the gear reads {1 - stiffness['value']:.0%} softer than the "
-                            "catalog; a series spring (housing, shafts) of about "
-                            f"{k1 * stiffness['value'] / (1 - stiffness['value']):.3g} N·m/rad "
-                            "reads the same"})
-    if problem.kind == "torsion" and stiffness and "housing_compliance" not in named \
-            and stiffness["value"] < 1 - SOFTER_READING_MIN and problem.base.curve is not None:
-        out.append(_spring_reading(problem, stiffness["value"], stiffness["within_spread"]))
+    if problem.kind == "torsion" and stiffness and problem.base.curve is not None:
+        # a named spring may be a gear softer beyond the spread; a gear softer within it
+        # may be a spring not named
+        floor = STIFFNESS_SPREAD if "housing_compliance" in named else SOFTER_READING_MIN
+        if stiffness["value"] < 1 - floor:
+            out.append(_spring_reading(problem, stiffness["value"],
+                                       stiffness["within_spread"]))
     if problem.kind == "transmission" and "te_1x" in named:
         out.append({"effects": ["te_1x"], "measurement": "encoder_eccentricity",
                     "text": "once per WG revolution: the gear's transmission error, or an "
