@@ -201,13 +201,15 @@ def test_a_spring_that_stands_in_for_the_loop_s_narrowing_is_not_named(suite, na
 
 def test_a_temperature_that_rose_with_test_time_gives_the_drift_reading_too():
     """Suite F's Reynolds temperature single (seed 7, 2 per cell) ran its temperatures in test
-    order (correlation with time 0.97). With a drift of linear + quadratic form the drift fit
-    as well as the temperature law (ΔBIC 96.6 against 96.1) and took it; with the drift a
-    steady drift plus a first-order warm-up the law is named. Either way the report gives the
-    other reading: a drift of the rig with time."""
+    order (correlation with time 0.97): the temperature law and a drift of the rig with
+    time fit it alike (ΔBIC 96.6 against 96.1 with a linear + quadratic drift; with the
+    drift as a steady drift plus a first-order warm-up, the fits' stopping tolerance decides
+    which is the larger, 1e-5 naming the law and 1e-4 the drift). Whichever is named, the
+    report gives the other as its reading: the data cannot tell them apart."""
     case = named_case("f", "f-efficiency-single-temperature_dependence-reynolds-mult-117", 7)
     result = bench.reconcile_case(case)
-    assert result["missing_effects"] == ["temperature_dependence"]
+    named = result["missing_effects"] + [m["effect"] for m in result["measurement_effects"]]
+    assert named in (["temperature_dependence"], ["thermal_drift"])
     assert any("temperature_dependence" in r.get("effects", [])
                and r.get("measurement") == "thermal_drift"
                for r in result["equivalent_readings"])
