@@ -71,3 +71,24 @@ def test_data_equivalent_decoys_get_both_readings(scored):
     both readings, not silently as the gear effect. Seed 11, 2 per cell: B 66.7 % (6),
     C 83.3 % (18), D 83.3 % (12); floor 60 %."""
     assert share(scored, "both_readings") >= 0.60
+
+
+def test_an_undecided_second_says_what_either_would_leave():
+    """Where two seconds fit about equally beside the named effect, neither is named and the
+    reading gives the RMSE with each added to the named model in its final form: never above
+    the RMSE without it (the second's amplitude may be zero), and over the noise. Seed 11,
+    1 per cell: G's Everett Preisach loop + shaft spring leaves 1.36σ, 1.21σ with a spring
+    and 1.24σ with a play."""
+    found = 0
+    for path in SUITES:
+        _, results = suite_runs(path)
+        for result in results:
+            for reading in result.get("equivalent_readings", []):
+                if "undecided" not in reading:
+                    continue
+                found += 1
+                assert set(reading["rmse"]) == set(reading["undecided"])
+                for rmse in reading["rmse"].values():
+                    assert 0.0 < rmse <= result["rmse_after"] * (1 + 1e-6)
+                assert reading["text"].count("× the noise") == 2
+    assert found, "no undecided second in the sample: the reading is not exercised"

@@ -10,6 +10,8 @@ drift with test time. The report then gives both readings.
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from .baseline import STIFFNESS_SPREAD, catalog_twist
@@ -142,15 +144,28 @@ def progressive_spring(read: bool) -> list[dict]:
                      "torque its spring constant is given at (FD table 314-1)"}]
 
 
-def undecided(named: tuple[str, ...], rivals: tuple[str, ...]) -> list[dict]:
-    """The reading of a second effect left unnamed because two fit about equally."""
+def undecided(named: tuple[str, ...], rivals: tuple[str, ...],
+              rmse: dict[str, float] | None = None, sigma: float = math.nan,
+              unit: str = "") -> list[dict]:
+    """The reading of a second effect left unnamed because two fit about equally, with the
+    RMSE [``unit``] each leaves beside ``named`` (``rmse``, by rival) and that RMSE over
+    the noise RMS ``sigma`` [``unit``]: how much of what is left either would explain."""
     if not rivals:
         return []
-    return [{"undecided": list(rivals), "beside": list(named),
+    rmse = {r: v for r, v in (rmse or {}).items() if r in rivals and math.isfinite(v)}
+
+    def each(rival: str) -> str:
+        if rival not in rmse:
+            return rival
+        ratio = (f", {rmse[rival] / sigma:.2f}× the noise" if sigma > 0 and
+                 math.isfinite(sigma) else "")
+        return f"{rival} (RMSE {rmse[rival]:.3g}{' ' + unit if unit else ''}{ratio})"
+
+    return [{"undecided": list(rivals), "beside": list(named), "rmse": rmse,
              "text": f"what {' + '.join(named)} leaves is explained about equally well by "
-                     f"{rivals[0]} or by {rivals[1]}: neither is named (the shape "
-                     f"{' + '.join(named)}'s formula misses, or either effect; a test that "
-                     "separates them decides)"}]
+                     f"{each(rivals[0])} or by {each(rivals[1])}: neither is named (the "
+                     f"shape {' + '.join(named)}'s formula misses, or either effect; a test "
+                     "that separates them decides)"}]
 
 
 def _spring_reading(problem: Problem, stiffness: float, within: bool) -> dict:
