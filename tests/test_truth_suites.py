@@ -76,7 +76,8 @@ def test_data_equivalent_decoys_get_both_readings(scored):
 def test_an_undecided_second_says_what_either_would_leave():
     """Where two seconds fit about equally beside the named effect, neither is named and the
     reading gives the RMSE with each added to the named model in its final form: never above
-    the RMSE without it (the second's amplitude may be zero), and over the noise. Seed 11,
+    the RMSE without it (the second's amplitude may be zero), and as a multiple of the noise
+    RMS. Seed 11,
     1 per cell: G's Everett Preisach loop + shaft spring leaves 1.36σ, 1.21σ with a spring
     and 1.24σ with a play."""
     found = 0

@@ -144,15 +144,14 @@ def progressive_spring(read: bool) -> list[dict]:
                      "torque its spring constant is given at (FD table 314-1)"}]
 
 
-def undecided(named: tuple[str, ...], rivals: tuple[str, ...],
-              rmse: dict[str, float] | None = None, sigma: float = math.nan,
-              unit: str = "") -> list[dict]:
+def undecided(named: tuple[str, ...], rivals: tuple[str, ...], rmse: dict[str, float],
+              sigma: float, unit: str) -> list[dict]:
     """The reading of a second effect left unnamed because two fit about equally, with the
     RMSE [``unit``] each leaves beside ``named`` (``rmse``, by rival) and that RMSE over
     the noise RMS ``sigma`` [``unit``]: how much of what is left either would explain."""
     if not rivals:
         return []
-    rmse = {r: v for r, v in (rmse or {}).items() if r in rivals and math.isfinite(v)}
+    rmse = {r: v for r, v in rmse.items() if r in rivals and math.isfinite(v)}
 
     def each(rival: str) -> str:
         if rival not in rmse:

@@ -168,6 +168,8 @@ def reconcile(kind: str, data: dict, model: GearModel, catalog: Catalog,
     sigma = sigma_of(final)
     tau = correlation_time(residual[keep])
     steps = _steps(problem, named, candidates, final, keep)
+    rivals = best.undecided if best else ()  # undecided seconds, with what each leaves
+    beside = _rmse_beside(problem, final, rivals, keep)
     measurement = [f.as_dict() for f in fixes] + [
         rig_entry(problem, final, e)
         for e in final.effects if e in search.rig.RIG_EFFECTS]
@@ -175,18 +177,16 @@ def reconcile(kind: str, data: dict, model: GearModel, catalog: Catalog,
     return _result(problem, model, start, final, resid0, residual, sigma, tau, keep, steps,
                    candidates, rig_table, measurement, nuisances,
                    readings.equivalent(problem, final, named, nuisances)
-                   + readings.undecided(named, best.undecided if best else (),
-                                        _rmse_beside(problem, final, best, keep),
-                                        sigma, base.unit)
+                   + readings.undecided(named, rivals, beside, sigma, base.unit)
                    + readings.series_slip(bool(best and best.series_slip))
                    + readings.progressive_spring(bool(best and best.progressive)))
 
 
-def _rmse_beside(problem: Problem, final: Fit, best, keep) -> dict[str, float]:
-    """RMSE on the kept rows with each undecided second added to the named model in its
-    final form (a loop refined to a Preisach or friction-element sum keeps that form), by
-    the second's name."""
-    rivals = best.undecided if best else ()
+def _rmse_beside(problem: Problem, final: Fit, rivals: tuple[str, ...], keep
+                 ) -> dict[str, float]:
+    """RMSE on the kept rows with each undecided second ``rivals`` added to the named model
+    in its final form (a loop refined to a Preisach or friction-element sum keeps that form),
+    by the second's name."""
     fits = {r: fit_model(problem, final.effects + (r,), final.theta) for r in rivals}
     return {r: _rmse((problem.base.y - f.prediction)[keep]) for r, f in fits.items()}
 
