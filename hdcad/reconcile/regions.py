@@ -69,6 +69,8 @@ def _bins(x: np.ndarray, count: int):
     if len(values) <= count:
         return [(v, v, x == v) for v in values]
     edges = np.linspace(x.min(), x.max(), count + 1)
+    # an edge a rounding off zero (−T0…T0 in an even count) is printed as zero
+    edges[np.abs(edges) < 1e-9 * (x.max() - x.min())] = 0.0
     index = np.clip(np.searchsorted(edges, x, side="right") - 1, 0, count - 1)
     return [(edges[i], edges[i + 1], index == i) for i in range(count)]
 
