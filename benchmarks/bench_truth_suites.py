@@ -6,8 +6,9 @@ suite hid. Prints per suite and per kind the confusion matrix (rows: hidden gear
 the category, columns: effects named) and the acceptance figures:
 
 - single: hidden effect named first;  pair: both named; or-read: both named, or the one
-  not named given as the other reading of a nuisance (a housing spring that the stiffness
-  scale takes within its spread, reported beside it);
+  not named given as a reading the data cannot tell from the one named (a housing spring
+  that the stiffness scale takes within its spread, or that a loop in series with the gear
+  takes as its own slip compliance, reported beside it);
 - false alarm: a gear effect named on a clean or separable-decoy case;
 - wrong second name: a correctly named single effect followed by another name;
 - rmse_after / noise_rms on correctly named cases (share ≤ 1.2);  median gap shrink;
@@ -94,10 +95,13 @@ def score(case, result) -> dict:
         out["wrong_second"] = out["first_right"] and len(named) > 1
     if case.category == "pair":
         out["both"] = set(hidden) <= set(named)
-        # or the one not named given as the other reading of a nuisance (a housing spring
-        # inside the stiffness scale's spread)
-        read = {e for r in result.get("equivalent_readings", []) if r.get("nuisance")
-                for e in r.get("effects", [])}
+        # or the one not named given as a reading the data cannot tell from the one named:
+        # a nuisance's (a housing spring inside the stiffness scale's spread) or a loop's
+        # in series (a loop beside a spring of its own slip compliance)
+        readings_ = result.get("equivalent_readings", [])
+        read = ({e for r in readings_ if r.get("nuisance") for e in r.get("effects", [])}
+                | {e for r in readings_ if r.get("reading") == "series_slip"
+                   for e in r.get("alternative", [])})
         out["both_or_read"] = set(hidden) <= set(named) | read
     if case.category in ("clean", "decoy_separable"):
         out["false_alarm"] = bool(named)

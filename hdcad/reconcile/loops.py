@@ -1,9 +1,13 @@
 """The form of a named hysteresis loop, chosen once the effect is named: the Bouc–Wen loop
 (with which it is named) about its own backbone or about the catalog curve, with a constant
-compliance or through the gear's, and a Preisach relay sum (:mod:`.preisach`).
+compliance or through the gear's, a Preisach relay sum (:mod:`.preisach`) and a sum of
+friction elements (:mod:`.plays`) in parallel with the gear or in series with it.
 
-None changes which effects are named; each is kept when it follows the data more closely,
-and says so in the notes.
+None of these refinements changes which effects are named; each is kept when it follows the
+data more closely, and says so in the notes. Two readings are the search's
+(:func:`series_slip` for the Bouc–Wen loop, :func:`series_plays` for friction elements): a
+loop beside a housing spring that is only the loop's own compliance past its slip torques
+is named as the hysteresis alone, in series with the gear.
 """
 
 from __future__ import annotations
@@ -18,8 +22,8 @@ from . import effects as fx
 from . import plays
 from .bounded import solve
 from .fitting import POLISH_TOL, Fit, Problem, best_setting, finish
-from .model_columns import columns
-from .gates import bic_best, effective_n
+from .model_columns import columns, nonlinear
+from .gates import Candidate, bic_best, effective_n, gate
 
 THROUGH_GEAR = ("hysteresis: a friction torque in parallel with the gear's spring (its twist "
                 "the torque × the catalog curve's local compliance)")
@@ -157,40 +161,119 @@ def _replace_loop_notes(problem: Problem, text: str, form: tuple, fit: Fit, best
 
 PLAYS = ("hysteresis: a sum of {k} friction elements (an Iwan model: slip torques "
          "{lo:.3g} … {hi:.3g} N·m, weights fitted)")
+SERIES_PLAYS = ("hysteresis: {k} friction elements in series with the gear (slip torques "
+                "{lo:.3g} … {hi:.3g} N·m, weights fitted): past its slip torques the loop "
+                "adds a compliance of its own")
 
 
 def refine_plays(problem: Problem, fit: Fit) -> Fit:
     """A named hysteresis as a sum of friction elements with fixed slip torques, weighted
-    freely (:mod:`.plays`), in whichever of the loop's forms (about its own backbone or the
-    catalog curve, with a constant compliance or through the gear's) fits best, kept in
-    place of the loop found so far (Bouc–Wen or Preisach) when BIC (effective sample size
-    N/τ) prefers it. The weights are amplitudes, so no shape is fitted: a loop whose
+    freely (:mod:`.plays`), in whichever of the loop's forms (in parallel with the gear,
+    about its own backbone or the catalog curve, with a constant compliance or through the
+    gear's; or in series with it, softening past its slip torques) fits best, kept in place
+    of the loop found so far (Bouc–Wen or Preisach) when BIC (effective sample size N/τ)
+    prefers it. The weights are amplitudes, so no shape is fitted: a loop whose
     branches follow none of the parametric forms is followed as closely as the slip torques
-    resolve it. Leaves ``problem.hysteresis_plays`` set when it is kept."""
+    resolve it. A loop named as one slip element in series keeps to the series form. Leaves
+    ``problem.hysteresis_plays`` set when it is kept."""
     if (problem.kind != "torsion" or "hysteresis" not in fit.effects
-            or problem.base.curve is None or problem.hysteresis_series
+            or problem.base.curve is None or problem.hysteresis_plays
             or problem.branches is None):
         return fit
     named = (problem.hysteresis_centred, problem.hysteresis_through_gear,
-             problem.hysteresis_preisach)
+             problem.hysteresis_preisach, problem.hysteresis_series)
     shapes = _shapes_beside_loop(problem, fit)  # the weights are amplitudes, counted by finish
     problem.hysteresis_preisach, problem.hysteresis_plays = None, True
     trials = []
-    for form in itertools.product((False, True), repeat=2):
-        problem.hysteresis_centred, problem.hysteresis_through_gear = form
+    # in parallel with the gear in the loop's four forms, or in series with it
+    forms = ([] if problem.hysteresis_series else list(itertools.product((False, True),
+                                                                           repeat=2)))
+    for form in [*forms, "series"]:
+        _set_plays_form(problem, form)
         trials.append((finish(problem, fit.effects, fit.theta, shapes), form))
     best, form = min(trials, key=lambda t: t[0].rss)
     n_eff = effective_n(problem, best.residual(problem))
     if not bic_best({False: (fit.rss, fit.n_params), True: (best.rss, best.n_params)}, n_eff):
         (problem.hysteresis_centred, problem.hysteresis_through_gear,
-         problem.hysteresis_preisach) = named
+         problem.hysteresis_preisach, problem.hysteresis_series) = named
         problem.hysteresis_plays = False
         return fit
-    problem.hysteresis_centred, problem.hysteresis_through_gear = form
+    _set_plays_form(problem, form)
+    if form == "series":
+        r = plays.thresholds(problem.scales["T0"])[plays.series_first():]
+        _replace_loop_notes(problem, SERIES_PLAYS.format(k=len(r), lo=r[0], hi=r[-1]),
+                            (False, False), fit, best, "the parametric loop")
+        return best
     r = plays.thresholds(problem.scales["T0"])
     _replace_loop_notes(problem, PLAYS.format(k=len(r), lo=r[0], hi=r[-1]), form, fit, best,
                         "the parametric loop")
     return best
+
+
+def _set_plays_form(problem: Problem, form: tuple | str) -> None:
+    """The friction elements in series with the gear (``"series"``) or in parallel with it
+    in ``form`` (about the catalog curve, through the gear's compliance)."""
+    problem.hysteresis_series = form == "series"
+    problem.hysteresis_centred, problem.hysteresis_through_gear = (
+        (False, False) if form == "series" else form)
+
+
+def series_slip(problem: Problem, start: Fit, best: Candidate, sigma: float, tau: float
+                ) -> Fit | None:
+    """The fit of one slip element in series with the gear when a hysteresis +
+    housing_compliance pair reads the same as it (its spring is the loop's own slip
+    compliance); else None.
+
+    Friction in parallel with the gear (Bouc–Wen, −z_sat·z) plus a spring of compliance
+    z_sat/T_s is, term for term, a slip element in series (z_sat·(T/T_s − z): Iwan,
+    Preisach, Masing–Ramberg–Osgood loops add their slip to the gear's twist). At the pair's
+    own shape the compliance is tied to z_sat/T_s; when BIC does not prefer the free spring
+    to the tie (ΔBIC ≤ 0) the data read the same both ways: the simpler reading, one
+    hysteresis, is named and the report gives the other.
+    """
+    if set(best.effects) != {"hysteresis", "housing_compliance"}:
+        return None
+    effects = start.effects + ("hysteresis",)
+    problem.hysteresis_series = True
+    try:
+        tied = finish(problem, effects, best.fit.theta, len(nonlinear(problem.kind, effects)))
+    finally:
+        problem.hysteresis_series = False
+    return tied if gate(problem, tied, best.fit, sigma, tau).delta_bic <= 0.0 else None
+
+
+def series_plays(problem: Problem, start: Fit, pair: Fit, sigma: float, tau: float
+                 ) -> Fit | None:
+    """The hysteresis alone as friction elements in series with the gear (:mod:`.plays`)
+    when it reads the same as the hysteresis + housing spring ``pair``, as it is and with
+    the same elements in parallel (in whichever of the loop's four forms fits best) beside a
+    spring of free compliance: the pair's ΔBIC over it ≤ 0 in both, as for the Bouc–Wen
+    loop's slip element (:func:`series_slip`); else None. A loop that softens past its slip
+    torques (a kinematic-hardening slider, a joint in microslip) is then one effect, the
+    spring its own compliance, and the pair is reported as the other reading. Leaves the
+    problem's loop in series when it returns a fit."""
+    if (problem.kind != "torsion" or problem.base.curve is None or problem.branches is None
+            or set(pair.effects) - set(start.effects) != {"hysteresis", "housing_compliance"}):
+        return None
+    shapes = _shapes_beside_loop(problem, pair)
+    named = (problem.hysteresis_centred, problem.hysteresis_through_gear)
+    problem.hysteresis_plays = True
+    trials = []
+    for form in itertools.product((False, True), repeat=2):
+        _set_plays_form(problem, form)
+        trials.append(finish(problem, pair.effects, pair.theta, shapes))
+    parallel = min(trials, key=lambda f: f.rss)
+    _set_plays_form(problem, "series")
+    effects = start.effects + ("hysteresis",)
+    spring = len(fx.nonlinear_parameters("housing_compliance", problem.kind))
+    tied = finish(problem, effects, pair.theta, shapes - spring)
+    if all(gate(problem, tied, f, sigma, tau).delta_bic <= 0.0 for f in (parallel, pair)):
+        r = plays.thresholds(problem.scales["T0"])[plays.series_first():]
+        problem.notes.append(SERIES_PLAYS.format(k=len(r), lo=r[0], hi=r[-1]))
+        return tied
+    problem.hysteresis_plays = problem.hysteresis_series = False
+    problem.hysteresis_centred, problem.hysteresis_through_gear = named
+    return None
 
 
 def _density_residual(problem: Problem, fit: Fit, scale: np.ndarray):

@@ -79,9 +79,14 @@ def columns(problem: Problem, effects: tuple[str, ...], theta: dict[str, float],
             add(name, names, block)
         elif name == "hysteresis" and problem.hysteresis_plays:
             S = _stop_states(problem, inp["torque_Nm"], branches, rows)
-            if problem.hysteresis_through_gear:
+            first = 0
+            if problem.hysteresis_series:  # each element's slip adds to the gear's twist
+                first = plays.series_first()
+                r = plays.thresholds(problem.scales["T0"])[first:]
+                S = S[:, first:] - inp["torque_Nm"][:, None] / r
+            elif problem.hysteresis_through_gear:
                 S = S * _through_gear(problem, inp["torque_Nm"], theta)[:, None]
-            add(name, [f"a_{k}" for k in range(S.shape[1])], -S, 0.0)
+            add(name, [f"a_{k}" for k in range(first, first + S.shape[1])], -S, 0.0)
         elif name == "hysteresis":
             z = _hysteresis_state(problem, inp["torque_Nm"], th, branches, rows)
             if problem.hysteresis_series:

@@ -95,6 +95,10 @@ PREISACH_FORM = ("θ = θ_catalog(T) + z_sat·f(T history)  (Preisach relay sum:
 PLAYS_FORM = ("θ = θ_catalog(T) − Σ a_k·s_k(T history)/r_k, a_k ≥ 0  (friction elements "
               "with slip torques r_k: stop operators, s_k = T − p_k with the play p_k kept "
               "within r_k of T; Iwan 1966)")
+SERIES_PLAYS_FORM = ("θ = θ_catalog(T) + Σ a_k·p_k(T history)/r_k, a_k ≥ 0  (friction "
+                     "elements in series with the gear: play operators p_k kept within the "
+                     "slip torque r_k of T, each adding its slip past r_k; Prandtl–Ishlinskii, "
+                     "Brokate & Sprekels 1996)")
 
 
 def _plays(problem: Problem, b: dict[str, float]) -> dict[str, tuple[float, str]]:
@@ -102,9 +106,11 @@ def _plays(problem: Problem, b: dict[str, float]) -> dict[str, tuple[float, str]
     use (slip torque and weight)."""
     t0 = problem.scales["T0"]
     r = plays.thresholds(t0)
-    a = np.array([b[f"a_{k}"] for k in range(len(r))])
+    a = np.array([b.get(f"a_{k}", 0.0) for k in range(len(r))])  # series: the first unused
     out = {"z_sat": (float(a.sum()), "rad"), "T0": (t0, "N·m"),
            "loss_at_T0": (plays.loss_at_zero(a, r, t0), "rad")}
+    if problem.hysteresis_series:  # the compliance it adds once every element slips
+        out["slip_compliance"] = (float(np.sum(a / r)), "rad/(N·m)")
     for k in np.flatnonzero(a):
         out[f"slip_torque_{k}"] = (float(r[k]), "N·m")
         out[f"weight_{k}"] = (float(a[k]), "rad")
@@ -115,7 +121,7 @@ def effect_form(problem: Problem, effect: str) -> str:
     """The formula of the effect as the final model has it (the catalog of effects gives
     the form it is named with)."""
     if effect == "hysteresis" and problem.hysteresis_plays:
-        return PLAYS_FORM
+        return SERIES_PLAYS_FORM if problem.hysteresis_series else PLAYS_FORM
     if effect == "hysteresis" and problem.hysteresis_preisach is not None:
         return PREISACH_FORM
     return fx.EFFECTS[effect].form

@@ -12,6 +12,11 @@ linear least squares over the fixed thresholds, without a shape search: a loop w
 branches follow no one formula (Menegotto–Pinto, Ramberg–Osgood, a density of slip
 torques with two modes) is followed as closely as the thresholds resolve it.
 
+In series with the gear the same elements add their slip to its twist: Σ a_k·p_k/r_k, the
+play operators' sum (Prandtl–Ishlinskii), = Σ a_k·(T/r_k − s_k/r_k): the loop in parallel
+plus a spring of compliance Σ a_k/r_k, so that the gear's twist is the catalog's below the
+first slip torque and grows past each (a kinematic-hardening slider, a joint in microslip).
+
 References
 ----------
 Iwan, W. D. (1966) "A distributed-element model for hysteresis and its steady-state dynamic
@@ -30,11 +35,20 @@ import numpy as np
 # zero torque to elements that slip only towards the test's largest torque (one that never
 # slips in ±T0 cycles, r ≥ T0, is a linear spring, the catalog curve's own scale)
 THRESHOLD_SHARES = np.geomspace(0.005, 0.95, 16)
+# elements in series with the gear slip at this share of T0 or more: one that slips at r adds
+# a compliance past r and a loop 2·r wide in torque beside it, so an element slipping near
+# zero torque is a housing spring in disguise (its loop under the noise)
+SERIES_MIN_SHARE = 0.05
 
 
 def thresholds(T0: float) -> np.ndarray:
     """The elements' slip torques [N·m] for a test to ±T0 [N·m]."""
     return T0 * THRESHOLD_SHARES
+
+
+def series_first() -> int:
+    """Index of the first element that may act in series with the gear."""
+    return int(np.searchsorted(THRESHOLD_SHARES, SERIES_MIN_SHARE))
 
 
 def stop_states(torque_Nm: np.ndarray, r_Nm: np.ndarray,

@@ -125,9 +125,9 @@ def series_slip(tied: bool) -> list[dict]:
     if not tied:
         return []
     return [{"alternative": ["hysteresis", "housing_compliance"], "reading": "series_slip",
-             "text": "the loop is read as one slip element in series with the gear (Iwan, "
-                     "Preisach): friction in parallel with the gear plus a housing spring of "
-                     "the loop's own slip compliance z_sat/T_s reads the same; check the "
+             "text": "the loop is read as slip in series with the gear (Iwan, Preisach): "
+                     "friction in parallel with the gear plus a housing spring of the loop's "
+                     "own slip compliance (slip_compliance) reads the same; check the "
                      "housing's stiffness before stiffening it"}]
 
 

@@ -14,11 +14,14 @@
    ``SECOND_AMBIGUITY`` of the best pair's ΔBIC, the second is not identified and only the
    first is named (:func:`ambiguous_second`); a hysteresis + housing spring pair whose
    spring is the loop's own slip compliance is named as one slip element in series, and
-   reported with the pair as its other reading (:func:`series_slip`), unless the pair with
-   its loop through the gear's compliance fits clearly better (:func:`_through_gear`);
-   otherwise a spring must also earn its place beside the loop through the gear's
-   compliance, and a spring or a backlash beside the loop drawn about the catalog curve, or
-   it is the loop's own shape and only the hysteresis is named (:func:`_spring_of_its_own`).
+   reported with the pair as its other reading (:func:`.loops.series_slip`), unless the
+   pair with its loop through the gear's compliance fits clearly better
+   (:func:`_through_gear`); otherwise a spring must also earn its place beside the loop
+   through the gear's compliance, and a spring or a backlash beside the loop drawn about the
+   catalog curve, or it is the loop's own shape and only the hysteresis is named
+   (:func:`_spring_of_its_own`); and a spring that earns it may still be the compliance of
+   friction elements in series with the gear past their slip torques
+   (:func:`.loops.series_plays`).
 
 References
 ----------
@@ -33,11 +36,10 @@ from dataclasses import replace
 
 from . import effects as fx
 from . import rig, springs
-from .fitting import Fit, Problem, finish, fit_model, rss_at
-from .model_columns import nonlinear
+from .fitting import Fit, Problem, fit_model, rss_at
 from .gates import (BIC_MIN, EXPLAINED_MIN, GATE_NOTE, Candidate, Gate, bic_gain, effective_n,
                     gate, has_evidence, round_noise)
-from .loops import THROUGH_GEAR, preisach_forms, use_preisach
+from .loops import THROUGH_GEAR, preisach_forms, series_plays, series_slip, use_preisach
 from .refine import fit_viscosity_law, refine_te_order
 
 __all__ = ["BIC_MIN", "GATE_NOTE", "Candidate", "Gate", "gate", "round_noise", "select_gear",
@@ -162,10 +164,16 @@ def select_gear(problem: Problem, start: Fit, singles: dict[str, Fit] | None = N
         problem.hysteresis_series = True
         best = Candidate(("hysteresis",), tied, gate(problem, start, tied, sigma, tau), True,
                          series_slip=True)
+    if tied is None:
+        best = _spring_of_its_own(problem, best, passing, sigma, tau)
+        # a spring that earns its place beside the loop in parallel with the gear may still
+        # be the loop's own compliance past its slip torques
+        tied = series_plays(problem, start, best.fit, sigma, tau) if best else None
+        if tied is not None:
+            best = Candidate(("hysteresis",), tied, gate(problem, start, tied, sigma, tau),
+                             True, series_slip=True)
     if tied is not None:
         out = [best if c.effects == best.effects else c for c in out]
-    else:
-        best = _spring_of_its_own(problem, best, passing, sigma, tau)
     spring = springs.stiffening(problem, start, best, singles, sigma, tau) if best else None
     if spring is not None:
         out = [c for c in out if c.effects != spring.effects] + [spring]
@@ -225,30 +233,6 @@ def _unless_ambiguous(best: Candidate | None, passing: list[Candidate]) -> Candi
         return best
     single = next((c for c in passing if c.effects == (found[0],)), None)
     return replace(single, undecided=found[1]) if single else best
-
-
-def series_slip(problem: Problem, start: Fit, best: Candidate, sigma: float, tau: float
-                ) -> Fit | None:
-    """The fit of one slip element in series with the gear when a hysteresis +
-    housing_compliance pair reads the same as it (its spring is the loop's own slip
-    compliance); else None.
-
-    Friction in parallel with the gear (Bouc–Wen, −z_sat·z) plus a spring of compliance
-    z_sat/T_s is, term for term, a slip element in series (z_sat·(T/T_s − z): Iwan,
-    Preisach, Masing–Ramberg–Osgood loops add their slip to the gear's twist). At the pair's
-    own shape the compliance is tied to z_sat/T_s; when BIC does not prefer the free spring
-    to the tie (ΔBIC ≤ 0) the data read the same both ways: the simpler reading, one
-    hysteresis, is named and the report gives the other.
-    """
-    if set(best.effects) != {"hysteresis", "housing_compliance"}:
-        return None
-    effects = start.effects + ("hysteresis",)
-    problem.hysteresis_series = True
-    try:
-        tied = finish(problem, effects, best.fit.theta, len(nonlinear(problem.kind, effects)))
-    finally:
-        problem.hysteresis_series = False
-    return tied if gate(problem, tied, best.fit, sigma, tau).delta_bic <= 0.0 else None
 
 
 def _through_gear(problem: Problem, best: Candidate, tied: Fit, sigma: float, tau: float
