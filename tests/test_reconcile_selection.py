@@ -110,6 +110,19 @@ def test_a_stiffening_housing_spring_is_not_read_as_backlash(index):
     assert result["rmse_after"] <= 1.2 * case.noise_rms
 
 
+def test_a_backlash_named_alone_is_weighed_against_a_stiffening_spring_at_any_width():
+    """Suite C's cubic housing spring in the test sample (seed 11, 1 per cell) fits a tanh
+    backlash of width 0.12·T0, under the 0.2·T0 past which a backlash beside another effect
+    is weighed against a spring that stiffens; it was named backlash. A backlash named
+    alone is weighed at any width: here the spring fits better (the backlash's ΔBIC over it
+    −20), while suite C's sharp tanh single keeps its backlash by ΔBIC 671 and suite B's
+    (below) gets no spring reading."""
+    case, result = case_run("c", "c-torsion-single-housingcompliance-cubic-000")
+    assert result["missing_effects"] == ["housing_compliance"]
+    assert _stiffening_reading(result)
+    assert result["rmse_after"] <= 1.2 * case.noise_rms
+
+
 def test_a_stiffening_spring_behind_a_sharp_backlash_is_named_second():
     """Suite C's tanh backlash + cubic housing pair (seed 11): the linear housing spring adds
     nothing over the backlash (the stiffness scale takes a linear compliance), a stiffening

@@ -4,8 +4,8 @@ A clearance closing over a wide torque band and a series spring whose stiffness 
 torque (contact that closes gradually, bolted joints) bend the torque–twist curve alike.
 Two readings follow from it once the gear effects are named:
 
-- a named backlash whose tanh width is wide (> ``TAKEUP_MAX``·T0) is weighed against the
-  stiffening spring (:func:`slow_backlash`);
+- a backlash named alone, or one beside another effect whose tanh width is wide
+  (> ``TAKEUP_MAX``·T0), is weighed against the stiffening spring (:func:`slow_backlash`);
 - a named backlash may have a stiffening spring as its second (:func:`stiffening_second`):
   a linear series spring is the catalog compliance's own scatter (the stiffness scale takes
   it), a stiffening one bends the curve.
@@ -31,8 +31,10 @@ from .gates import BIC_MIN, Candidate, gate
 # A clearance is taken up at low torque: the catalog gives lost motion at ±3 % of the
 # torque of its spring constant (FD table 314-1: ±load / load = 0.029–0.033). A backlash
 # whose tanh width exceeds this share of T0 is still closing at 2·T_w = 40 % of T0 (96 %
-# closed), over ten times the catalog's load: it is read against a series spring that
-# stiffens, which bends the curve the same way (:func:`slow_backlash`).
+# closed), over ten times the catalog's load: beside another effect it is read against a
+# series spring that stiffens, which bends the curve the same way (:func:`slow_backlash`).
+# A backlash named alone is read against it at any width: a spring soft at zero torque and
+# stiffening from there (a cubic contact) was named as a backlash 0.12·T0 wide.
 TAKEUP_MAX = 0.2
 # T_k / T0 of the stiffening spring: a knee far below the take-up torque is a clearance's
 # step (the cube root of T rises steeply from zero)
@@ -51,17 +53,20 @@ def stiffening(problem: Problem, start: Fit, best: Candidate, singles: dict[str,
 
 def slow_backlash(problem: Problem, start: Fit, best: Candidate, singles: dict[str, Fit],
                   sigma: float, tau: float) -> Candidate | None:
-    """A named backlash taken up only slowly (tanh width > ``TAKEUP_MAX``·T0) read as a
-    housing spring that stiffens (:func:`.effects.progressive_twist`, knee torque fitted)
-    when the backlash does not fit clearly better (ΔBIC ≤ ``BIC_MIN``) and the spring passes
-    the gates (over the other member alone too, in a pair); else None.
+    """A backlash named alone, or one beside another effect taken up only slowly (tanh
+    width > ``TAKEUP_MAX``·T0), read as a housing spring that stiffens
+    (:func:`.effects.progressive_twist`, knee torque fitted) when the backlash does not fit
+    clearly better (ΔBIC ≤ ``BIC_MIN``) and the spring passes the gates (over the other
+    member alone too, in a pair); else None. Beside a loop a narrow backlash is not weighed:
+    the loop's saturation bends the curve too, and the spring would take its shape.
 
     A lost motion not taken up by a few per cent of the rated torque is not what the
     catalog calls lost motion; the backlash is reported as the other reading.
     """
     if "backlash" not in best.effects:
         return None
-    if best.fit.theta["backlash.T_w"] <= TAKEUP_MAX * problem.scales["T0"]:
+    if (best.effects != ("backlash",)
+            and best.fit.theta["backlash.T_w"] <= TAKEUP_MAX * problem.scales["T0"]):
         return None
     named = tuple(dict.fromkeys("housing_compliance" if e == "backlash" else e
                                 for e in best.effects))
