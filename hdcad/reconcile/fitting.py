@@ -104,6 +104,10 @@ class Problem:
     # (effects.backlash_twist): 0 while effects are named, fitted once backlash is
     # (refine.refine_play)
     play_hold: float = 0.0
+    # torque at which a play is crossed, as a share of T0 (a steady torque preloads one
+    # flank: a slider's weight on a horizontal axis): 0 while effects are named, fitted once
+    # backlash is (refine.refine_play)
+    play_bias: float = 0.0
     # the member each harmonic's error turns with (k → δ: its angle k·(1 + δ)·φ, φ the WG
     # angle): δ = 0 the fixed circular spline, else the output member's (frames.frames);
     # and a second member's share at constant amplitude (frames.refine_frames)

@@ -95,7 +95,7 @@ def columns(problem: Problem, effects: tuple[str, ...], theta: dict[str, float],
                 z = z * _through_gear(problem, inp["torque_Nm"], theta)
             add(name, ["z_sat"], -z, 0.0)
         elif name == "backlash":
-            torque = inp["torque_Nm"]
+            torque = inp["torque_Nm"] - problem.play_bias * problem.scales["T0"]
             if problem.play_hold:
                 torque = torque - inp["branch_direction"] * (
                     problem.play_hold * problem.scales["T0"])

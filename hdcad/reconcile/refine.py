@@ -31,6 +31,7 @@ _SPEED_LOSS_BOUNDS = (-0.5, 0.9)  # as the viscous share a of the temperature la
 # rolling bearing's no-load torque ∝ ν^(2/3), Palmgren)
 _DRAG_VISCOSITY_BOUNDS = (0.0, 2.0)
 _PLAY_HOLD_BOUNDS = (0.0, 0.3)  # holding torque of a play, as a share of the largest torque
+_PLAY_BIAS_BOUNDS = (-0.15, 0.15)  # torque a play is crossed at, as a share of the largest
 # a band of temperature over which a loss changes: centres between the temperatures tested
 # (at most this many), widths [K] from a step between two of them to a gradual change
 _BAND_CENTRES = 8
@@ -120,14 +121,18 @@ def refine(problem: Problem, fit: Fit) -> Fit:
 
 def refine_play(problem: Problem, fit: Fit) -> Fit:
     """A named backlash whose play friction holds at one side until the load passes a
-    holding torque T_h in the new direction (a loop at zero torque of area b·2T_h), one
+    holding torque T_h in the new direction (a loop at zero torque of area b·2T_h), then one
+    crossed at a torque T_c off zero (a steady torque preloads one flank), each one
     parameter more, kept when BIC prefers it (:func:`_one_more`)."""
     if "backlash" not in fit.effects or problem.branches is None:
         return fit
     t0 = problem.scales["T0"]
-    return _one_more(problem, fit, "play_hold", _PLAY_HOLD_BOUNDS, lambda h: (
+    fit = _one_more(problem, fit, "play_hold", _PLAY_HOLD_BOUNDS, lambda h: (
         f"backlash: the play is held by friction until the load passes {h * t0:.3g} N·m "
         "in the new direction"))
+    return _one_more(problem, fit, "play_bias", _PLAY_BIAS_BOUNDS, lambda c: (
+        f"backlash: the play is crossed at {c * t0:.3g} N·m, not at zero torque (a steady "
+        "torque preloads one flank: a slider's weight on a horizontal axis, a drag)"))
 
 
 def refine_low_load(problem: Problem, fit: Fit) -> Fit:
