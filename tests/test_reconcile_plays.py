@@ -133,3 +133,16 @@ def test_a_loop_that_softens_past_its_slip_torques_gets_no_spring_beside_it(suit
     assert result["missing_effects"] == ["hysteresis"]
     assert _series_reading(result)
     assert result["rmse_after"] <= 1.2 * case.noise_rms
+
+
+def test_a_spring_that_barely_beats_the_loop_in_series_is_named_with_a_note():
+    """Suite I's Mindlin–Deresiewicz loop with an annular-disc housing spring (seed 11, 1
+    per cell): the spring beats friction elements in series by ΔBIC 8.8, under the 10 an
+    effect is named at, and is named; the notes say that the series loop reads almost the
+    same, so a reviewer checks the housing before stiffening it."""
+    case, result = case_run(
+        "i", "i-torsion-pair-hysteresis-housing-compliance-mindlin-deresiewicz-annular-disc-"
+             "shear-000")
+    assert set(result["missing_effects"]) == {"hysteresis", "housing_compliance"}
+    assert any("read almost the same" in note for note in result["notes"])
+    assert result["rmse_after"] <= 1.2 * case.noise_rms

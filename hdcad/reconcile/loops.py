@@ -23,7 +23,7 @@ from . import plays
 from .bounded import solve
 from .fitting import POLISH_TOL, Fit, Problem, best_setting, finish
 from .model_columns import columns, nonlinear
-from .gates import Candidate, bic_best, effective_n, gate
+from .gates import BIC_MIN, Candidate, bic_best, effective_n, gate
 
 THROUGH_GEAR = ("hysteresis: a friction torque in parallel with the gear's spring (its twist "
                 "the torque × the catalog curve's local compliance)")
@@ -164,6 +164,10 @@ PLAYS = ("hysteresis: a sum of {k} friction elements (an Iwan model: slip torque
 SERIES_PLAYS = ("hysteresis: {k} friction elements in series with the gear (slip torques "
                 "{lo:.3g} … {hi:.3g} N·m, weights fitted): past its slip torques the loop "
                 "adds a compliance of its own")
+SERIES_CLOSE = ("housing_compliance beside the loop: friction elements in series with the "
+                "gear, without the spring, read almost the same (the spring's ΔBIC over them "
+                "{gain:.1f}, under the {limit:g} an effect is named at); check the housing's "
+                "stiffness before stiffening it")
 
 
 def refine_plays(problem: Problem, fit: Fit) -> Fit:
@@ -250,8 +254,9 @@ def series_plays(problem: Problem, start: Fit, pair: Fit, sigma: float, tau: flo
     spring of free compliance: the pair's ΔBIC over it ≤ 0 in both, as for the Bouc–Wen
     loop's slip element (:func:`series_slip`); else None. A loop that softens past its slip
     torques (a kinematic-hardening slider, a joint in microslip) is then one effect, the
-    spring its own compliance, and the pair is reported as the other reading. Leaves the
-    problem's loop in series when it returns a fit."""
+    spring its own compliance, and the pair is reported as the other reading. A spring that
+    beats the series loop by less than ``BIC_MIN`` stays named, with a note that the series
+    loop reads almost the same. Leaves the problem's loop in series when it returns a fit."""
     if (problem.kind != "torsion" or problem.base.curve is None or problem.branches is None
             or set(pair.effects) - set(start.effects) != {"hysteresis", "housing_compliance"}):
         return None
@@ -267,10 +272,13 @@ def series_plays(problem: Problem, start: Fit, pair: Fit, sigma: float, tau: flo
     effects = start.effects + ("hysteresis",)
     spring = len(fx.nonlinear_parameters("housing_compliance", problem.kind))
     tied = finish(problem, effects, pair.theta, shapes - spring)
-    if all(gate(problem, tied, f, sigma, tau).delta_bic <= 0.0 for f in (parallel, pair)):
+    spring_gain = max(gate(problem, tied, f, sigma, tau).delta_bic for f in (parallel, pair))
+    if spring_gain <= 0.0:
         r = plays.thresholds(problem.scales["T0"])[plays.series_first():]
         problem.notes.append(SERIES_PLAYS.format(k=len(r), lo=r[0], hi=r[-1]))
         return tied
+    if spring_gain <= BIC_MIN:
+        problem.notes.append(SERIES_CLOSE.format(gain=spring_gain, limit=BIC_MIN))
     problem.hysteresis_plays = problem.hysteresis_series = False
     problem.hysteresis_centred, problem.hysteresis_through_gear = named
     return None
