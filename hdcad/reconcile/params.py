@@ -106,7 +106,8 @@ def _plays(problem: Problem, b: dict[str, float]) -> dict[str, tuple[float, str]
     use (slip torque and weight)."""
     t0 = problem.scales["T0"]
     r = plays.thresholds(t0)
-    a = np.array([b.get(f"a_{k}", 0.0) for k in range(len(r))])  # series: the first unused
+    # in series, the elements that slip below plays.SERIES_MIN_SHARE·T0 have no column
+    a = np.array([b.get(f"a_{k}", 0.0) for k in range(len(r))])
     out = {"z_sat": (float(a.sum()), "rad"), "T0": (t0, "N·m"),
            "loss_at_T0": (plays.loss_at_zero(a, r, t0), "rad")}
     if problem.hysteresis_series:  # the compliance it adds once every element slips
