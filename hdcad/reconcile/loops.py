@@ -203,15 +203,18 @@ def refine_plays(problem: Problem, fit: Fit) -> Fit:
         problem.hysteresis_plays = False
         return fit
     _set_plays_form(problem, form)
-    if form == "series":
-        r = plays.thresholds(problem.scales["T0"])[plays.series_first():]
-        _replace_loop_notes(problem, SERIES_PLAYS.format(k=len(r), lo=r[0], hi=r[-1]),
-                            (False, False), fit, best, "the parametric loop")
-        return best
-    r = plays.thresholds(problem.scales["T0"])
-    _replace_loop_notes(problem, PLAYS.format(k=len(r), lo=r[0], hi=r[-1]), form, fit, best,
-                        "the parametric loop")
+    _replace_loop_notes(problem, _plays_text(problem),
+                        (problem.hysteresis_centred, problem.hysteresis_through_gear), fit,
+                        best, "the parametric loop")
     return best
+
+
+def _plays_text(problem: Problem) -> str:
+    """The note on the sum of friction elements in the problem's form: in parallel with the
+    gear (:data:`PLAYS`) or in series with it (:data:`SERIES_PLAYS`)."""
+    series = problem.hysteresis_series
+    r = plays.thresholds(problem.scales["T0"])[plays.series_first() if series else 0:]
+    return (SERIES_PLAYS if series else PLAYS).format(k=len(r), lo=r[0], hi=r[-1])
 
 
 def _set_plays_form(problem: Problem, form: tuple | str) -> None:
@@ -274,8 +277,7 @@ def series_plays(problem: Problem, start: Fit, pair: Fit, sigma: float, tau: flo
     tied = finish(problem, effects, pair.theta, shapes - spring)
     spring_gain = max(gate(problem, tied, f, sigma, tau).delta_bic for f in (parallel, pair))
     if spring_gain <= 0.0:
-        r = plays.thresholds(problem.scales["T0"])[plays.series_first():]
-        problem.notes.append(SERIES_PLAYS.format(k=len(r), lo=r[0], hi=r[-1]))
+        problem.notes.append(_plays_text(problem))
         return tied
     if spring_gain <= BIC_MIN:
         problem.notes.append(SERIES_CLOSE.format(gain=spring_gain, limit=BIC_MIN))

@@ -160,18 +160,16 @@ def select_gear(problem: Problem, start: Fit, singles: dict[str, Fit] | None = N
     through = _through_gear(problem, best, tied, sigma, tau) if tied is not None else None
     if through is not None:  # the pair stays, its loop through the gear's compliance
         best = replace(best, fit=through, gate=gate(problem, start, through, sigma, tau))
-    elif tied is not None:  # the simpler reading is named: one slip element in series
+    elif tied is not None:  # one slip element in series
         problem.hysteresis_series = True
-        best = Candidate(("hysteresis",), tied, gate(problem, start, tied, sigma, tau), True,
-                         series_slip=True)
-    if tied is None:
+    else:
         best = _spring_of_its_own(problem, best, passing, sigma, tau)
         # a spring that earns its place beside the loop in parallel with the gear may still
         # be the loop's own compliance past its slip torques
         tied = series_plays(problem, start, best.fit, sigma, tau) if best else None
-        if tied is not None:
-            best = Candidate(("hysteresis",), tied, gate(problem, start, tied, sigma, tau),
-                             True, series_slip=True)
+    if tied is not None and through is None:  # the simpler reading is named: a loop in series
+        best = Candidate(("hysteresis",), tied, gate(problem, start, tied, sigma, tau), True,
+                         series_slip=True)
     if tied is not None:
         out = [best if c.effects == best.effects else c for c in out]
     spring = springs.stiffening(problem, start, best, singles, sigma, tau) if best else None
