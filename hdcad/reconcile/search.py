@@ -36,10 +36,12 @@ from dataclasses import replace
 
 from . import effects as fx
 from . import rig, springs
+from .baseline import STIFFNESS_SPREAD
 from .fitting import Fit, Problem, fit_model, rss_at
 from .gates import (BIC_MIN, EXPLAINED_MIN, GATE_NOTE, Candidate, Gate, bic_gain, effective_n,
                     gate, has_evidence, round_noise)
 from .loops import THROUGH_GEAR, preisach_forms, series_plays, series_slip, use_preisach
+from .readings import free_scale
 from .refine import fit_viscosity_law, refine_te_order
 
 __all__ = ["BIC_MIN", "GATE_NOTE", "Candidate", "Gate", "gate", "round_noise", "select_gear",
@@ -271,7 +273,8 @@ def _pair(problem: Problem, start: Fit, fa: Fit, fb: Fit, fit: Fit, sigma: float
     for member, other in ((a, fb), (b, fa)):
         over = gate(problem, other, fit, sigma, tau)
         if not (over.passes(second=True) or over.passes()
-                and _beyond_modulation(problem, member, other, fit, sigma, tau)):
+                and (_beyond_modulation(problem, member, other, fit, sigma, tau)
+                     or _beyond_spread(problem, member, other))):
             ok, reason = False, f"{member} adds too little to {other.effects[-1]}"
         elif not has_evidence(problem, member, other, sigma, tau):
             ok, reason = False, f"no loop in the residual of {other.effects[-1]}"
@@ -304,6 +307,19 @@ def _beyond_modulation(problem: Problem, member: str, other: Fit, fit: Fit, sigm
         problem.te_order = saved
     g = gate(problem, modulated, pair, sigma, tau)
     return g.delta_bic > BIC_MIN and g.explained > EXPLAINED_MIN
+
+
+def _beyond_spread(problem: Problem, member: str, other: Fit) -> bool:
+    """Whether the housing spring ``member`` is the compliance the other effect alone leaves
+    to a gear softer than the catalog's spread: refitted without the spread's bounds, the
+    other effect's model reads the gear beyond it. The catalog holds the gear within its
+    spread, so the rest is a spring outside the gear, however little of the other's residual
+    it explains once the scale has taken the spread (the share rule guards a second that
+    takes a sliver of the first's misfit, not a bound in force)."""
+    if member != "housing_compliance" or problem.base.curve is None:
+        return False
+    scale = free_scale(problem, other)
+    return scale is not None and scale > 1.0 / (1.0 - STIFFNESS_SPREAD)
 
 
 def _beyond_law(problem: Problem, member: str, other: Fit, fit: Fit, sigma: float,
