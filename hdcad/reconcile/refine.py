@@ -18,6 +18,7 @@ import numpy as np
 from scipy.optimize import minimize_scalar
 
 from . import efficiency_laws as laws
+from .baseline import STIFFNESS_SPREAD
 from .fitting import Fit, Problem, best_setting, finish, fit_model
 from .model_columns import nonlinear
 from .frames import refine_frames
@@ -25,6 +26,7 @@ from .gates import BIC_MIN, bic_best, bic_gain, effective_n
 from .harmonics import TE_ORDER_MAX
 from .joint_fit import refine_spring
 from .loops import refine_hysteresis, refine_plays, refine_preisach
+from .readings import free_scale
 
 _SPEED_LOSS_BOUNDS = (-0.5, 0.9)  # as the viscous share a of the temperature law
 # exponent k of a drag ∝ ν^k: 0 (no coupling) … 2 (Petroff's viscous torque is ∝ ν; a
@@ -109,14 +111,46 @@ def refine(problem: Problem, fit: Fit) -> Fit:
     curve where the twist leaves its first segment (vibration); else the TE's overtones and
     modulation order, the viscosity law, the loop's Bouc–Wen form, a play held by friction,
     then a Preisach relay sum in place of the Bouc–Wen loop, and a sum of friction elements
-    in place of either, where BIC prefers them."""
+    in place of either, where BIC prefers them; last, the gear's stiffness where the data
+    put it beyond the catalog's spread."""
     fit = refine_frames(problem, fit)
     curved = refine_spring(problem, fit)
     if curved is fit:
         fit = refine_hysteresis(problem, refine_viscosity(problem, refine_low_load(
             problem, refine_te_order(problem, refine_te_overtones(problem, fit)))))
-        return refine_plays(problem, refine_preisach(problem, refine_play(problem, fit)))
+        fit = refine_plays(problem, refine_preisach(problem, refine_play(problem, fit)))
+        return refine_stiffness(problem, fit)
     return curved
+
+
+def refine_stiffness(problem: Problem, fit: Fit) -> Fit:
+    """The named model with the gear's compliance scale let out of the catalog's spread,
+    where the data put the gear beyond it: stiffer, or softer with no series spring named
+    (a spring would take the rest). The scale is held within the spread while effects are
+    named, so that a gear effect must explain more than the catalog's scatter; a gear
+    outside it is reported as a nuisance outside its range, and the RMSE after is that of
+    the gear as measured, not of the catalog's bound. Leaves ``problem.scale_free`` set when
+    taken."""
+    scale = free_scale(problem, fit) if problem.kind == "torsion" else None
+    if not scale or scale <= 0:
+        return fit
+    stiffer = scale < 1.0 / (1.0 + STIFFNESS_SPREAD)
+    softer = scale > 1.0 / (1.0 - STIFFNESS_SPREAD) and "housing_compliance" not in fit.effects
+    if not (stiffer or softer):
+        return fit
+    problem.scale_free = True
+    free = fit_model(problem, fit.effects, fit.theta)
+    if free.rss >= fit.rss:
+        problem.scale_free = False
+        return fit
+    scale = free_scale(problem, free) or scale
+    problem.notes.append(
+        f"the reconciled model keeps the gear {abs(1.0 / scale - 1.0):.1%} "
+        f"{'stiffer' if stiffer else 'softer'} than the catalog, outside its assumed "
+        f"±{STIFFNESS_SPREAD:.0%} spread, where the data put it (the RMSE after is with "
+        "it): a gear out of its scatter, or a twist sensor's gain; check the sensor's "
+        "calibration before the catalog value")
+    return free
 
 
 def refine_play(problem: Problem, fit: Fit) -> Fit:
