@@ -214,6 +214,8 @@ SPEED_REFERENCE_RPM = 1000.0
 # The seeds call the stiffness table's values averages (seed 000 p.020) and state no spread;
 # ±10 % is assumed for the scatter of a real gear about them (printed with the result).
 STIFFNESS_SPREAD = 0.10
+# the compliance scale of a gear within that spread (stiffness 1 ± spread)
+COMPLIANCE_SCALE_BOUNDS = (1.0 / (1.0 + STIFFNESS_SPREAD), 1.0 / (1.0 - STIFFNESS_SPREAD))
 
 
 def torsion(data: dict, model: GearModel, catalog: Catalog) -> Baseline:

@@ -55,12 +55,12 @@ def columns(problem: Problem, effects: tuple[str, ...], theta: dict[str, float],
     cols = [free]
     labels = [("baseline", n_) for n_ in base.free_names]
     # the compliance scale stays within the catalog's spread: beyond it the data ask for an
-    # effect (or, for a stiffer gear, the nuisance report says so); left free only to ask
-    # whether something else than the scale is in the data
-    spread = baselines.STIFFNESS_SPREAD
-    scale = (0.0, np.inf) if problem.scale_free else (1 / (1 + spread), 1 / (1 - spread))
+    # effect (or, for a stiffer gear, the nuisance report says so); left free to ask
+    # whether something else than the scale is in the data, and for the reconciled model
+    # of a gear the data put beyond the spread
+    scale = (0.0, np.inf) if problem.scale_free else baselines.COMPLIANCE_SCALE_BOUNDS
     bounds = {"compliance_scale": scale,
-              "printed_reading": (0.0, 1 / (1 - spread)),
+              "printed_reading": (0.0, baselines.COMPLIANCE_SCALE_BOUNDS[1]),
               "scale_error": (-baselines.ANGLE_GAIN_LIMIT, baselines.ANGLE_GAIN_LIMIT)}
     lower = [bounds.get(n_, (-np.inf, np.inf))[0] for n_ in base.free_names]
     upper = [bounds.get(n_, (-np.inf, np.inf))[1] for n_ in base.free_names]

@@ -18,7 +18,7 @@ import numpy as np
 from scipy.optimize import minimize_scalar
 
 from . import efficiency_laws as laws
-from .baseline import STIFFNESS_SPREAD
+from .baseline import COMPLIANCE_SCALE_BOUNDS, STIFFNESS_SPREAD
 from .fitting import Fit, Problem, best_setting, finish, fit_model
 from .model_columns import nonlinear
 from .frames import refine_frames
@@ -134,8 +134,8 @@ def refine_stiffness(problem: Problem, fit: Fit) -> Fit:
     scale = free_scale(problem, fit) if problem.kind == "torsion" else None
     if not scale or scale <= 0:
         return fit
-    stiffer = scale < 1.0 / (1.0 + STIFFNESS_SPREAD)
-    softer = scale > 1.0 / (1.0 - STIFFNESS_SPREAD) and "housing_compliance" not in fit.effects
+    stiffer = scale < COMPLIANCE_SCALE_BOUNDS[0]
+    softer = scale > COMPLIANCE_SCALE_BOUNDS[1] and "housing_compliance" not in fit.effects
     if not (stiffer or softer):
         return fit
     problem.scale_free = True

@@ -36,7 +36,7 @@ from dataclasses import replace
 
 from . import effects as fx
 from . import rig, springs
-from .baseline import STIFFNESS_SPREAD
+from .baseline import COMPLIANCE_SCALE_BOUNDS
 from .fitting import Fit, Problem, fit_model, rss_at
 from .gates import (BIC_MIN, EXPLAINED_MIN, GATE_NOTE, Candidate, Gate, bic_gain, effective_n,
                     gate, has_evidence, round_noise)
@@ -319,7 +319,7 @@ def _beyond_spread(problem: Problem, member: str, other: Fit) -> bool:
     if member != "housing_compliance" or problem.base.curve is None:
         return False
     scale = free_scale(problem, other)
-    return scale is not None and scale > 1.0 / (1.0 - STIFFNESS_SPREAD)
+    return scale is not None and scale > COMPLIANCE_SCALE_BOUNDS[1]
 
 
 def _beyond_law(problem: Problem, member: str, other: Fit, fit: Fit, sigma: float,
