@@ -72,7 +72,8 @@ def _scale_entry(name: str, value: float, what: str) -> dict:
 
 def free_scale(problem: Problem, fit: Fit) -> float | None:
     """Compliance scale of ``fit`` refitted without the spread's bounds and without a series
-    spring (which would take the same share): what the data say about the gear's stiffness."""
+    spring (which would take the same share): what the data say about the gear's stiffness.
+    None where the baseline has no compliance scale (every kind but torsion)."""
     names = [label for label in fit.labels]
     if ("baseline", "compliance_scale") not in names:
         return None

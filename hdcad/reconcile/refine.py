@@ -131,7 +131,7 @@ def refine_stiffness(problem: Problem, fit: Fit) -> Fit:
     outside it is reported as a nuisance outside its range, and the RMSE after is that of
     the gear as measured, not of the catalog's bound. Leaves ``problem.scale_free`` set when
     taken."""
-    scale = free_scale(problem, fit) if problem.kind == "torsion" else None
+    scale = free_scale(problem, fit)
     if not scale or scale <= 0:
         return fit
     stiffer = scale < COMPLIANCE_SCALE_BOUNDS[0]

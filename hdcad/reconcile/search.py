@@ -316,9 +316,7 @@ def _beyond_spread(problem: Problem, member: str, other: Fit) -> bool:
     spread, so the rest is a spring outside the gear, however little of the other's residual
     it explains once the scale has taken the spread (the share rule guards a second that
     takes a sliver of the first's misfit, not a bound in force)."""
-    if member != "housing_compliance" or problem.base.curve is None:
-        return False
-    scale = free_scale(problem, other)
+    scale = free_scale(problem, other) if member == "housing_compliance" else None
     return scale is not None and scale > COMPLIANCE_SCALE_BOUNDS[1]
 
 
