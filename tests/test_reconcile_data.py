@@ -330,6 +330,27 @@ def test_an_eccentric_input_encoder_reads_as_te_1x_not_as_the_record_s_time():
     assert result.measurement_effects == []
 
 
+def test_gross_outliers_are_left_out_of_the_regions_too():
+    """CSF-32-100-GH at its catalog curve over ±137 N·m with noise 2×10⁻⁶ rad and every
+    40th sample 100× the noise off (40 gross outliers): they are left out of the fit and
+    the RMSE, and so out of the regions' RMS, which with them reads about 16× the noise in
+    every torque region and calls it in disagreement before and after."""
+    from hdcad.reconcile.baseline import catalog_twist, stiffness_curve
+    catalog = load_catalog()
+    model = resolve("CSF-32-100-GH", catalog)
+    torque = _torsion_triangle(137.0, 1600)
+    sigma = 2e-6
+    twist = (catalog_twist(stiffness_curve(model)[0], torque, 0.0)
+             + sigma * np.random.default_rng(6).standard_normal(len(torque)))
+    twist[20::40] += 100 * sigma * np.where(np.arange(40) % 2, 1.0, -1.0)
+    result = reconcile("torsion", {"torque_Nm": torque, "twist_rad": twist}, model, catalog)
+    assert result.missing_effects == [] and result.outliers == 40
+    assert result.rmse_after == pytest.approx(sigma, rel=0.1)
+    assert result.regions and all(r["rms_after"] < 1.3 * sigma and not r["significant"]
+                                  for r in result.regions)
+    assert result.disagreements == [] and result.unexplained == []
+
+
 def test_region_verdicts_read_before_and_after():
     from hdcad.reconcile.report import region_verdict
     assert region_verdict(True, False) == "disagreed → explained"

@@ -276,7 +276,8 @@ def harmonic_error(wg_angle_rad: np.ndarray, order: int, amplitude_rad: float,
 # --------------------------------------------------------------------------- library
 _TE_FORM = ("e(φ) = a·sin({k}·φ + p), φ = WG (input) angle; transmission: output = "
             "input/R + e; vibration: J·θ'' + c·θ' + K·θ = K·e(t), c = 2ζ√(KJ), on the "
-            "catalog's three-segment curve T(θ − e) where the twist passes T1/K1")
+            "catalog's three-segment curve T(θ − e) where the twist passes T1/K1, or the "
+            "steady state θ = K*·e/(K* − Jω²), K* = K·(1 + 2iζ), with structural damping")
 
 
 def _te(order: int, what: str) -> Effect:

@@ -113,6 +113,11 @@ class Problem:
     # and a second member's share at constant amplitude (frames.refine_frames)
     te_frames: dict[int, float] = field(default_factory=dict)
     te_second_frames: dict[int, float] = field(default_factory=dict)
+    # vibration: the joint's response as the steady state at each instant's frequency through
+    # a spring with structural damping (joint.steady_response) instead of the viscous joint's
+    # run-up with its free vibration: the latter while effects are named, the better of the
+    # two once they are (refine.refine_damping)
+    steady_state: bool = False
     cache: dict = field(default_factory=dict)
     _plane: preisach.PreisachPlane | None = field(default=None, repr=False)
 

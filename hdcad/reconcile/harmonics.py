@@ -49,15 +49,19 @@ def harmonic(problem: Problem, order: int, theta: dict, full: bool,
     zeta = theta.get("damping_ratio")
     scale = theta.get("stiffness_scale", 1.0)
     frames = (0.0, None) if fixed_frame else frames_of(problem, order)
-    key = (order, frames, zeta, scale, full)
+    key = (order, frames, zeta, scale, full, problem.steady_state)
     width = te_width(problem, order) if not fixed_frame else 2 * (problem.te_order + 1)
     # a lower Legendre order's columns are the first of a higher one's: kept once, sliced
     if key not in problem.cache or problem.cache[key].shape[1] < width:
         inp = problem.base.inputs
         cols = np.column_stack(te_basis(problem, order, frames))
         if zeta is not None:  # the joint's response needs the whole time history
-            k = float(inp["K_Nm_per_rad"]) * scale
-            cols = joint.joint_response(inp["time_s"], cols, k, float(inp["J_kgm2"]), zeta)
+            k, J = float(inp["K_Nm_per_rad"]) * scale, float(inp["J_kgm2"])
+            if problem.steady_state:
+                cols = joint.steady_response(cols, pair_rates(problem, order, frames), k, J,
+                                             zeta)
+            else:
+                cols = joint.joint_response(inp["time_s"], cols, k, J, zeta)
         cols = cols if full else cols[problem.rows]
         if len(problem.cache) > 64:
             problem.cache.clear()
@@ -96,6 +100,16 @@ def te_basis(problem: Problem, order: int,
            if second is not None else [])
     return own + [c * p for p in legendre(inp["record_position"], problem.te_order)
                   for c in (np.sin(a), np.cos(a))]
+
+
+def pair_rates(problem: Problem, order: int, frames: tuple[float, float | None]
+               ) -> np.ndarray:
+    """Angular rate [rad/s] of each (sin, cos) pair of :func:`te_basis`'s columns in
+    ``frames`` (n × pairs): k·(1 + δ) times the WG's rate."""
+    frame, second = frames
+    rates = ([order * (1 + second)] if second is not None else []) + \
+        [order * (1 + frame)] * (problem.te_order + 1)
+    return np.outer(2 * np.pi * problem.base.inputs["input_speed_rpm"] / 60.0, rates)
 
 
 def te_column_labels(problem: Problem, order: int) -> tuple[str, ...]:

@@ -101,7 +101,12 @@ def nuisances(problem: Problem, fit: Fit) -> list[dict]:
     if "stiffness_scale" in fit.theta:
         out.append(_scale_entry("stiffness_scale", fit.theta["stiffness_scale"],
                                 "joint stiffness"))
-    if "damping_ratio" in fit.theta:
+    if "damping_ratio" in fit.theta and problem.steady_state:
+        eta = 2.0 * fit.theta["damping_ratio"]
+        out.append({"name": "loss_factor", "value": eta, "unit": "-",
+                    "text": f"structural loss factor η = {eta:.3g} (damps the resonance as a "
+                            f"viscous ζ = {eta / 2:.3g})"})
+    elif "damping_ratio" in fit.theta:
         out.append({"name": "damping_ratio", "value": fit.theta["damping_ratio"], "unit": "-",
                     "text": f"damping ratio {fit.theta['damping_ratio']:.3g}"})
     eta = _beta(fit, "eta0")

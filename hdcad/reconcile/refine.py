@@ -22,10 +22,11 @@ from .baseline import COMPLIANCE_SCALE_BOUNDS, STIFFNESS_SPREAD
 from .fitting import Fit, Problem, best_setting, finish, fit_model
 from .model_columns import nonlinear
 from .frames import refine_frames
-from .gates import BIC_MIN, bic_best, bic_gain, effective_n
+from .gates import BIC_MIN, EXPLAINED_MIN, bic_best, bic_gain, effective_n
 from .harmonics import TE_ORDER_MAX
 from .joint_fit import refine_spring
 from .loops import refine_hysteresis, refine_plays, refine_preisach
+from .noise import noise_rms
 from .readings import free_scale
 
 _SPEED_LOSS_BOUNDS = (-0.5, 0.9)  # as the viscous share a of the temperature law
@@ -107,20 +108,52 @@ def refine_te_overtones(problem: Problem, fit: Fit) -> Fit:
 
 
 def refine(problem: Problem, fit: Fit) -> Fit:
-    """The named model's final form: the named errors' frames, then the joint on the catalog
-    curve where the twist leaves its first segment (vibration); else the TE's overtones and
-    modulation order, the viscosity law, the loop's Bouc–Wen form, a play held by friction,
+    """The named model's final form: the named errors' frames, then the joint's steady state
+    with structural damping, or else the joint on the catalog curve where the twist leaves
+    its first segment (vibration); otherwise the TE's overtones and modulation order, the
+    viscosity law, the loop's Bouc–Wen form, a play held by friction,
     then a Preisach relay sum in place of the Bouc–Wen loop, and a sum of friction elements
     in place of either, where BIC prefers them; last, the gear's stiffness where the data
     put it beyond the catalog's spread."""
     fit = refine_frames(problem, fit)
-    curved = refine_spring(problem, fit)
+    steady = refine_damping(problem, fit)
+    curved = refine_spring(problem, fit) if steady is fit else fit
     if curved is fit:
+        fit = refine_te_overtones(problem, steady)
         fit = refine_hysteresis(problem, refine_viscosity(problem, refine_low_load(
-            problem, refine_te_order(problem, refine_te_overtones(problem, fit)))))
+            problem, refine_te_order(problem, fit))))
         fit = refine_plays(problem, refine_preisach(problem, refine_play(problem, fit)))
         return refine_stiffness(problem, fit)
     return curved
+
+
+def refine_damping(problem: Problem, fit: Fit) -> Fit:
+    """Vibration: the linear joint's response as the steady state through a spring with
+    structural damping (:func:`.joint.steady_response`, loss factor η = 2ζ) in place of the
+    viscous joint's run-up, kept when it lowers the BIC by more than ``BIC_MIN`` (the same
+    parameters; the effective sample size from its residual) and explains
+    ``EXPLAINED_MIN`` noise variances more (the gates of an effect: at thousands of rows a
+    sliver of a viscous joint's misfit passes the BIC alone). A material's loss factor
+    hardly changes with frequency, so structural damping damps the resonance as a viscous
+    ζ = η/2 does but the response off it differently, and it has no free vibration after
+    the resonance: a slow sweep or order-tracked data carry none."""
+    te = [e for e in fit.effects if e.startswith("te_")]
+    if problem.kind != "vibration" or not te or "damping_ratio" not in fit.theta:
+        return fit
+    problem.steady_state = True
+    best = fit_model(problem, fit.effects, fit.theta)
+    residual = best.residual(problem)
+    explained = (fit.rss - best.rss) / len(residual) / noise_rms(residual) ** 2
+    if bic_gain(fit, best, effective_n(problem, residual)) <= BIC_MIN or \
+            explained < EXPLAINED_MIN:
+        problem.steady_state = False
+        return fit
+    problem.notes.append(
+        f"joint: the steady-state response through a spring with structural damping (loss "
+        f"factor η = {2 * best.theta['damping_ratio']:.3g}) fits better than the viscous "
+        f"joint's run-up (RMSE {math.sqrt(best.rss / fit.rss):.2f}× of it): no free "
+        "vibration after the resonance, as a material's loss or a slow sweep gives")
+    return best
 
 
 def refine_stiffness(problem: Problem, fit: Fit) -> Fit:

@@ -76,9 +76,13 @@ def _bins(x: np.ndarray, count: int):
 
 
 def region_table(problem, before, after, sigma, tau):
-    """Rows (label, rms before, rms after, significant) for every region."""
+    """Rows (label, rms before, rms after, significant) for every region, on its rows less
+    the gross outliers (left out of every fit and of the RMSE)."""
     rows = []
+    kept = np.ones(len(before), bool)
+    kept[problem.outliers] = False
     for label, mask in regions(problem):
+        mask = mask & kept
         n = int(mask.sum())
         if n < 10:
             continue
