@@ -12,6 +12,8 @@ from __future__ import annotations
 import math
 
 import numpy as np
+from scipy.optimize import minimize_scalar
+from scipy.signal import lombscargle
 
 from .fitting import Problem
 from .harmonics import harmonic, te_order_of
@@ -23,6 +25,12 @@ REGION_RMS_MIN = 1.2     # region RMS / noise RMS
 HARMONIC_Z = 5.0
 HARMONIC_RMS_MIN = 0.3   # harmonic RMS / noise RMS
 HARMONIC_ORDERS = range(1, 7)
+# A transmission residual's ripple at any order (:func:`ripples`): the orders scanned, from
+# half a cycle per WG revolution to this many (a WG bearing's ball pass, about half its ball
+# count, lies below it), on a grid of a quarter of the record's resolution; at most this
+# many ripples reported
+RIPPLE_ORDERS = (0.5, 24.0)
+RIPPLES_MAX = 3
 
 
 def regions(problem: Problem) -> list[tuple[str, np.ndarray]]:
@@ -129,4 +137,81 @@ def unexplained(problem, final, sigma, tau, harmonics, fit) -> list[str]:
         if sig:
             out.append(f"residual in {label} (RMS {rms:.3g} {problem.base.unit}, noise "
                        f"{sigma:.3g}), unexplained")
+    if problem.kind == "transmission":
+        out += [_ripple_text(problem, order, rms, sigma, explained_orders)
+                for order, rms in ripples(problem, final, sigma, tau, explained_orders)]
     return out
+
+
+def ripples(problem: Problem, residual: np.ndarray, sigma: float, tau: float,
+            known: set[int]) -> list[tuple[float, float]]:
+    """(order [cycles per WG revolution], RMS [unit of the data]) of the ripples left in a
+    residual at orders that are neither in ``HARMONIC_ORDERS`` (reported by
+    :func:`harmonics`) nor in ``known``, the strongest first.
+
+    The generalised Lomb–Scargle periodogram of the residual against the WG angle over
+    ``RIPPLE_ORDERS`` finds the strongest order, refined to the best-fitting sine; it is
+    significant when its RMS exceeds the noise's standard error σ/√N_eff by ``HARMONIC_Z``
+    standard errors with the look-elsewhere cost of the orders scanned added (z² > Z² +
+    ln M, M the independent orders: a white noise's largest of M periodogram values is
+    about σ²/N_eff·ln M) and ``HARMONIC_RMS_MIN`` of the noise; it is taken out and the
+    scan repeated, up to ``RIPPLES_MAX`` times.
+
+    References: Zechmeister, M.; Kürster, M. (2009) "The generalised Lomb-Scargle
+    periodogram", Astron. Astrophys. 496: 577-584.
+    """
+    rows = problem.rows
+    phi = problem.base.inputs["wg_angle_rad"][rows]
+    revolutions = float(np.ptp(phi)) / (2 * math.pi)
+    if revolutions < 2:
+        return []
+    top = min(RIPPLE_ORDERS[1], 0.9 * math.pi / float(np.median(np.abs(np.diff(phi)))))
+    orders = np.arange(RIPPLE_ORDERS[0], top, 0.25 / revolutions)
+    if orders.size < 4:
+        return []
+    threshold = HARMONIC_Z ** 2 + math.log(orders.size / 4)
+    n_eff = max(len(rows) / tau, 3.0)
+    r = residual[rows] - residual[rows].mean()
+    found = []
+    for _ in range(RIPPLES_MAX):
+        start = orders[np.argmax(lombscargle(phi, r, orders, floating_mean=True))]
+        step = 0.25 / revolutions
+        order = minimize_scalar(lambda f: -_sine(phi, r, f)[1], method="bounded",
+                                bounds=(start - step, start + step)).x
+        part, rms = _sine(phi, r, order)
+        if (rms / (sigma / math.sqrt(n_eff))) ** 2 <= threshold or \
+                rms <= HARMONIC_RMS_MIN * sigma:
+            break
+        nearest = round(order)
+        if abs(order - nearest) > 1 / revolutions or not (
+                nearest in HARMONIC_ORDERS or nearest in known):
+            found.append((float(order), rms))
+        r = r - part
+    return found
+
+
+def _sine(phi: np.ndarray, r: np.ndarray, order: float) -> tuple[np.ndarray, float]:
+    """The least-squares sine of ``r`` at ``order`` cycles per WG revolution (with a mean)
+    and its RMS."""
+    X = np.column_stack([np.sin(order * phi), np.cos(order * phi), np.ones_like(phi)])
+    beta = np.linalg.lstsq(X, r, rcond=None)[0]
+    part = X[:, :2] @ beta[:2]
+    return part, float(np.sqrt(np.mean(part ** 2)))
+
+
+def _ripple_text(problem: Problem, order: float, rms: float, sigma: float,
+                 known: set[int]) -> str:
+    """A ripple as the report says it: beside a named error's order, a sideband of it (the
+    error's amplitude or phase varies faster than its slow form follows); else another
+    rotating member's or a sensor's."""
+    size = (f"RMS {rms:.3g} {problem.base.unit}, {rms / sigma:.2f}× the noise"
+            if sigma > 0 else f"RMS {rms:.3g} {problem.base.unit}")
+    near = min(known, key=lambda k: abs(order - k), default=None)
+    if near is not None and abs(order - near) < 0.5:
+        return (f"residual at {order:.4g} cycles per WG revolution ({size}), a sideband of the "
+                f"{near}× error: its amplitude or phase varies with a period of "
+                f"{1 / abs(order - near):.3g} WG revolutions, faster than its slow form "
+                "follows; unexplained")
+    return (f"residual at {order:.4g} cycles per WG revolution ({size}), not a harmonic of "
+            "the WG: another rotating member's (a WG bearing's ball pass, a coupling) or a "
+            "ripple of an angle sensor's own (its interpolation); unexplained")
