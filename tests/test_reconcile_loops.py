@@ -1,6 +1,6 @@
 """The forms a named effect takes once it is named: a hysteresis loop as a Preisach relay sum
 (:mod:`hdcad.reconcile.preisach`, :mod:`hdcad.reconcile.loops`) and a transmission error with
-the overtones of its harmonic series (:func:`hdcad.reconcile.refine.refine_te_overtones`).
+the overtones of its harmonic series (:func:`hdcad.reconcile.te_forms.refine_te_overtones`).
 
 The Preisach model is checked against a brute-force simulation of the relays it stands for
 (a Monte Carlo sample of the density, each relay switched sample by sample: a different

@@ -61,8 +61,13 @@ class Problem:
     te_order: int = TE_ORDER  # Legendre order of the TE amplitude and phase
     # harmonics of the named errors at k cycles per WG revolution (a wave generator's
     # ellipse series: 4× and 6× beside 2×), each with a constant amplitude: none while
-    # effects are named, chosen by BIC once they are (refine.refine_te_overtones)
+    # effects are named, chosen by BIC once they are (te_forms.refine_te_overtones)
     te_overtones: tuple[int, ...] = ()
+    # transmission: a named error's periodic modulation, k → (f_m [cycles per WG
+    # revolution], j): sidebands at k ± f_m … k ± j·f_m beside it (its amplitude or phase
+    # varies every 1/f_m WG revolutions, faster than the slow Legendre form follows): none
+    # while effects are named, kept by BIC once they are (te_forms.refine_te_sidebands)
+    te_sidebands: dict[int, tuple[float, int]] = field(default_factory=dict)
     # hysteresis as a slip element in series with the gear (z_sat·(T/T_s − z)) instead of
     # friction in parallel with it (−z_sat·z): the reading a hysteresis + spring pair is
     # tested against

@@ -22,7 +22,7 @@ if TYPE_CHECKING:
 
 # Legendre order of the slowly varying TE amplitude and phase while effects are named (3 and
 # 4 fit modulated TE better but a flexible TE also takes what a second effect explains);
-# once named, the order is chosen by BIC up to TE_ORDER_MAX (:func:`.refine.refine_te_order`)
+# once named, the order is chosen by BIC up to TE_ORDER_MAX (:func:`.te_forms.refine_te_order`)
 TE_ORDER = 2
 TE_ORDER_MAX = 24
 
@@ -74,6 +74,31 @@ def overtones_of(problem: Problem, effects: tuple[str, ...], name: str) -> list[
     divides, to te_1x the rest."""
     mine = [k for k in problem.te_overtones if k % 2 == 0 and "te_2x" in effects]
     return mine if name == "te_2x" else [k for k in problem.te_overtones if k not in mine]
+
+
+def sidebands(problem: Problem, order: int, full: bool) -> np.ndarray:
+    """sin/cos of the error at ``order`` shifted by ± j·f_m, j = 1 … the modulation's count
+    (``Problem.te_sidebands``), on the fitted rows or every row (n × 4j; labelled by
+    :func:`sideband_labels`): an amplitude modulation a·(1 + m·cos(f_m·φ)) gives the pair
+    k ± f_m, a phase modulation of depth d the pairs k ± j·f_m in the Bessel functions
+    J_j(d) (Carson 1922).
+
+    References: Carson, J. R. (1922) "Notes on the theory of modulation", Proc. IRE 10(1):
+    57-64.
+    """
+    frame = frames_of(problem, order)[0]
+    f_m, count = problem.te_sidebands[order]
+    phi = problem.base.inputs["wg_angle_rad"]
+    cols = [g((order * (1 + frame) + side * j * f_m) * phi) for j in range(1, count + 1)
+            for side in (1, -1) for g in (np.sin, np.cos)]
+    out = np.column_stack(cols)
+    return out if full else out[problem.rows]
+
+
+def sideband_labels(count: int) -> tuple[str, ...]:
+    """Names of :func:`sidebands`' columns: sin/cos at k + j·f_m and k − j·f_m."""
+    return tuple(f"{g}_sb{j}_{side}" for j in range(1, count + 1) for side in ("plus", "minus")
+                 for g in ("sin", "cos"))
 
 
 def frames_of(problem: Problem, order: int) -> tuple[float, float | None]:

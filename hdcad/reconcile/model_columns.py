@@ -20,7 +20,8 @@ from . import efficiency_laws as laws
 from . import effects as fx
 from . import plays, rig
 from .effects import key_of
-from .harmonics import harmonic, overtones_of, te_column_labels, te_order_of
+from .harmonics import (harmonic, overtones_of, sideband_labels, sidebands,
+                        te_column_labels, te_order_of)
 
 if TYPE_CHECKING:
     from .fitting import Problem
@@ -108,6 +109,9 @@ def columns(problem: Problem, effects: tuple[str, ...], theta: dict[str, float],
             add(name, te_column_labels(problem, order), harmonic(problem, order, theta, full))
             for k in overtones_of(problem, effects, name):
                 add(name, [f"sin_{k}x", f"cos_{k}x"], harmonic(problem, k, theta, full)[:, :2])
+            if order in problem.te_sidebands:
+                add(name, sideband_labels(problem.te_sidebands[order][1]),
+                    sidebands(problem, order, full))
         elif name == "low_load_efficiency":
             f = laws.low_load_factor(inp["alpha"], th["c"], th["q"], inp["input_speed_rpm"],
                                      th["s"], _viscosity(problem, effects, theta, inp),

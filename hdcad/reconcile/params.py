@@ -63,6 +63,10 @@ def _te(b: dict[str, float], th: dict[str, float]) -> dict[str, tuple[float, str
         s = b["sin"] + sum(b[f"sin_u{k}"] * polys[k] for k in range(1, len(polys)))
         c = b["cos"] + sum(b[f"cos_u{k}"] * polys[k] for k in range(1, len(polys)))
         out["amplitude_max"] = (float(np.max(np.hypot(s, c))), "rad")
+    for key in b:  # sidebands of a periodic modulation
+        if key.startswith("sin_sb"):
+            rest = key[4:]
+            out[f"{rest}_amplitude"] = (math.hypot(b[key], b["cos_" + rest]), "rad")
     for key in b:  # overtones of the error's harmonic series
         if key.startswith("sin_") and key.endswith("x"):
             k = key[4:-1]
@@ -163,6 +167,9 @@ def effect_params(problem: Problem, fit: Fit, effect: str) -> dict[str, dict]:
             out.update({"T_k": (knee, "N·m"), "K_h_at_T0": ((1 + 3 * u * u) / c, "N·m/rad")})
     elif effect in ("te_1x", "te_2x"):
         out = {**_te(b, fit.theta), **_frames(problem, b, te_order_of(effect))}
+        if te_order_of(effect) in problem.te_sidebands:
+            out["modulation_period"] = (1.0 / problem.te_sidebands[te_order_of(effect)][0],
+                                        "WG revolutions")
     elif effect == "low_load_efficiency":
         out = {"c": (th["c"], "-"), "q": (th["q"], "-"), "s": (th["s"], "-"),
                "Ke_at_alpha_0.58_1000rpm": (

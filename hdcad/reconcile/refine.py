@@ -1,8 +1,8 @@
-"""Refinements of the named model once the effects are chosen: how closely the transmission
-error follows its slow modulation and the overtones of its harmonic series, the temperature
-law's viscosity law and speed term, a low-load drag that grows with the oil's viscosity and
-a play held by friction. The joint's spring on the catalog curve (:mod:`.joint_fit`) and the
-loop's form (:mod:`.loops`) are chosen from here too.
+"""Refinements of the named model once the effects are chosen: the joint's damping, the
+temperature law's viscosity law and speed term, a low-load drag that grows with the oil's
+viscosity, a play held by friction and the gear's stiffness beyond its spread. The
+transmission error's forms (:mod:`.te_forms`), the joint's spring on the catalog curve
+(:mod:`.joint_fit`) and the loop's form (:mod:`.loops`) are chosen from here too.
 
 None changes which effects are named; each makes the reconciled model follow the data as
 closely as the physics and the noise allow, and says what it chose in the notes.
@@ -19,15 +19,14 @@ from scipy.optimize import minimize_scalar
 
 from . import efficiency_laws as laws
 from .baseline import COMPLIANCE_SCALE_BOUNDS, STIFFNESS_SPREAD
-from .fitting import Fit, Problem, best_setting, finish, fit_model
-from .model_columns import nonlinear
+from .fitting import Fit, Problem, best_setting, fit_model
 from .frames import refine_frames
 from .gates import BIC_MIN, EXPLAINED_MIN, bic_best, bic_gain, effective_n
-from .harmonics import TE_ORDER_MAX
 from .joint_fit import refine_spring
 from .loops import refine_hysteresis, refine_plays, refine_preisach
 from .noise import noise_rms
 from .readings import free_scale
+from .te_forms import refine_te_order, refine_te_overtones, refine_te_sidebands
 
 _SPEED_LOSS_BOUNDS = (-0.5, 0.9)  # as the viscous share a of the temperature law
 # exponent k of a drag ∝ ν^k: 0 (no coupling) … 2 (Petroff's viscous torque is ∝ ν; a
@@ -39,72 +38,6 @@ _PLAY_BIAS_BOUNDS = (-0.15, 0.15)  # torque a play is crossed at, as a share of 
 # (at most this many), widths [K] from a step between two of them to a gradual change
 _BAND_CENTRES = 8
 _BAND_WIDTHS_K = (2.0, 6.0, 18.0)
-
-
-def refine_te_order(problem: Problem, fit: Fit) -> Fit:
-    """The named transmission errors with the Legendre order of their slowly varying
-    amplitude and phase chosen by BIC (effective sample size N/τ, τ from the most flexible
-    fit's residual), from the naming order up to ``TE_ORDER_MAX``; leaves
-    ``problem.te_order`` at it.
-
-    Effects are named at a low order (a flexible TE would take what a second effect
-    explains); once named, a modulated error (amplitude or phase varying over the record)
-    is followed as closely as the data support.
-    """
-    if not any(e.startswith("te_") for e in fit.effects):
-        return fit
-    shapes = len(nonlinear(problem.kind, fit.effects))
-    fits = {}
-    # the widest first: the lower orders' columns are its first ones (cached)
-    for order in [TE_ORDER_MAX, *range(problem.te_order, TE_ORDER_MAX)]:
-        problem.te_order = order
-        fits[order] = finish(problem, fit.effects, fit.theta, shapes)
-    best = bic_best({o: (f.rss, f.n_params) for o, f in fits.items()},
-                     effective_n(problem, fits[TE_ORDER_MAX].residual(problem)))
-    problem.te_order = best
-    return fits[best]
-
-
-# overtones a named error may carry [cycles per WG revolution]: the multiples of its order up
-# to the sixth, the highest the residual report looks at (regions.HARMONIC_ORDERS)
-TE_OVERTONES = {"te_1x": (3, 4, 5, 6), "te_2x": (4, 6)}
-
-
-def refine_te_overtones(problem: Problem, fit: Fit) -> Fit:
-    """The named transmission errors with the overtones of their harmonic series that the
-    data support (forward selection, each kept while it lowers the BIC by more than
-    ``BIC_MIN`` at N/τ, τ from the fit with every allowed overtone); leaves
-    ``problem.te_overtones`` at them.
-
-    A wave generator's ellipse is not a pure 2× profile: its series carries 4× and 6×
-    beside the 2×, and a runout's 1× its multiples. They are the named error's own
-    harmonics, not effects of their own. Transmission only: in a run-up an overtone would
-    also excite the resonance at its own speed, which the joint's forced response does not
-    separate from the gear's nonlinearity.
-    """
-    allowed = sorted({k for e in fit.effects for k in TE_OVERTONES.get(e, ())})
-    if problem.kind != "transmission" or not allowed:
-        return fit
-    shapes = len(nonlinear(problem.kind, fit.effects))
-
-    def with_overtones(orders):
-        problem.te_overtones = tuple(sorted(orders))
-        return finish(problem, fit.effects, fit.theta, shapes)
-
-    n_eff = effective_n(problem, with_overtones(allowed).residual(problem))
-    chosen, best = (), fit
-    while len(chosen) < len(allowed):
-        trials = {k: with_overtones(chosen + (k,)) for k in allowed if k not in chosen}
-        k = min(trials, key=lambda j: trials[j].rss)
-        if bic_gain(best, trials[k], n_eff) <= BIC_MIN:
-            break
-        chosen, best = chosen + (k,), trials[k]
-    problem.te_overtones = tuple(sorted(chosen))
-    if chosen:
-        problem.notes.append("transmission error: overtones of the named error's harmonic "
-                             "series kept at " + ", ".join(f"{k}×" for k in sorted(chosen))
-                             + " per WG revolution (BIC)")
-    return best
 
 
 def refine(problem: Problem, fit: Fit) -> Fit:
@@ -119,7 +52,7 @@ def refine(problem: Problem, fit: Fit) -> Fit:
     steady = refine_damping(problem, fit)
     curved = refine_spring(problem, fit) if steady is fit else fit
     if curved is fit:
-        fit = refine_te_overtones(problem, steady)
+        fit = refine_te_sidebands(problem, refine_te_overtones(problem, steady))
         fit = refine_hysteresis(problem, refine_viscosity(problem, refine_low_load(
             problem, refine_te_order(problem, fit))))
         fit = refine_plays(problem, refine_preisach(problem, refine_play(problem, fit)))
@@ -143,7 +76,7 @@ def refine_damping(problem: Problem, fit: Fit) -> Fit:
     problem.steady_state = True
     best = fit_model(problem, fit.effects, fit.theta)
     residual = best.residual(problem)
-    explained = (fit.rss - best.rss) / len(residual) / noise_rms(residual) ** 2
+    explained = (fit.rss - best.rss) / len(residual) / (noise_rms(residual) ** 2 or 1e-300)
     if bic_gain(fit, best, effective_n(problem, residual)) <= BIC_MIN or \
             explained < EXPLAINED_MIN:
         problem.steady_state = False

@@ -13,7 +13,6 @@ import math
 
 import numpy as np
 from scipy.optimize import minimize_scalar
-from scipy.signal import lombscargle
 
 from .fitting import Problem
 from .harmonics import harmonic, te_order_of
@@ -27,8 +26,7 @@ HARMONIC_RMS_MIN = 0.3   # harmonic RMS / noise RMS
 HARMONIC_ORDERS = range(1, 7)
 # A transmission residual's ripple at any order (:func:`ripples`): the orders scanned, from
 # half a cycle per WG revolution to this many (a WG bearing's ball pass, about half its ball
-# count, lies below it), on a grid of a quarter of the record's resolution; at most this
-# many ripples reported
+# count, lies below it); at most this many ripples reported
 RIPPLE_ORDERS = (0.5, 24.0)
 RIPPLES_MAX = 3
 
@@ -138,56 +136,69 @@ def unexplained(problem, final, sigma, tau, harmonics, fit) -> list[str]:
             out.append(f"residual in {label} (RMS {rms:.3g} {problem.base.unit}, noise "
                        f"{sigma:.3g}), unexplained")
     if problem.kind == "transmission":
-        out += [_ripple_text(problem, order, rms, sigma, explained_orders)
-                for order, rms in ripples(problem, final, sigma, tau, explained_orders)]
+        out += [_ripple_text(problem, ripple, sigma, explained_orders)
+                for ripple in ripples(problem, final, sigma, tau, explained_orders)]
     return out
 
 
 def ripples(problem: Problem, residual: np.ndarray, sigma: float, tau: float,
-            known: set[int]) -> list[tuple[float, float]]:
-    """(order [cycles per WG revolution], RMS [unit of the data]) of the ripples left in a
-    residual at orders that are neither in ``HARMONIC_ORDERS`` (reported by
-    :func:`harmonics`) nor in ``known``, the strongest first.
+            known: set[int]) -> list[tuple[float, float, bool]]:
+    """(order [cycles per WG revolution], RMS [unit of the data], whether the order is a
+    whole number within the record's resolution) of the ripples left in a residual at
+    orders that are neither in ``HARMONIC_ORDERS`` (reported by :func:`harmonics`) nor in
+    ``known``, the strongest first.
 
-    The generalised Lomb–Scargle periodogram of the residual against the WG angle over
-    ``RIPPLE_ORDERS`` finds the strongest order, refined to the best-fitting sine; it is
-    significant when its RMS exceeds the noise's standard error σ/√N_eff by ``HARMONIC_Z``
-    standard errors with the look-elsewhere cost of the orders scanned added (z² > Z² +
-    ln M, M the independent orders: a white noise's largest of M periodogram values is
-    about σ²/N_eff·ln M) and ``HARMONIC_RMS_MIN`` of the noise; it is taken out and the
-    scan repeated, up to ``RIPPLES_MAX`` times.
+    The residual's spectrum against the WG angle (resampled evenly in the angle, padded
+    fourfold) gives the strongest order in ``RIPPLE_ORDERS``, refined to the best-fitting
+    sine on the samples themselves; it is significant when its RMS exceeds the noise's
+    standard error σ/√N_eff by ``HARMONIC_Z`` standard errors with the look-elsewhere cost
+    of the orders scanned added (z² > Z² + ln M, M the independent orders: a white noise's
+    largest of M periodogram values is about σ²/N_eff·ln M) and ``HARMONIC_RMS_MIN`` of the
+    noise; it is taken out and the scan repeated, up to ``RIPPLES_MAX`` times.
 
-    References: Zechmeister, M.; Kürster, M. (2009) "The generalised Lomb-Scargle
-    periodogram", Astron. Astrophys. 496: 577-584.
+    References: Scargle, J. D. (1982) "Studies in astronomical time series analysis II",
+    Astrophys. J. 263: 835-853 (the periodogram's false-alarm level over M frequencies).
     """
     rows = problem.rows
     phi = problem.base.inputs["wg_angle_rad"][rows]
     revolutions = float(np.ptp(phi)) / (2 * math.pi)
-    if revolutions < 2:
+    if revolutions < 2 or np.any(np.diff(phi) <= 0):
         return []
-    top = min(RIPPLE_ORDERS[1], 0.9 * math.pi / float(np.median(np.abs(np.diff(phi)))))
-    orders = np.arange(RIPPLE_ORDERS[0], top, 0.25 / revolutions)
-    if orders.size < 4:
+    top = min(RIPPLE_ORDERS[1], 0.9 * math.pi / float(np.median(np.diff(phi))))
+    independent = (top - RIPPLE_ORDERS[0]) * revolutions
+    if independent < 1:
         return []
-    threshold = HARMONIC_Z ** 2 + math.log(orders.size / 4)
+    threshold = HARMONIC_Z ** 2 + math.log(independent)
     n_eff = max(len(rows) / tau, 3.0)
     r = residual[rows] - residual[rows].mean()
+    step = 0.25 / revolutions
     found = []
     for _ in range(RIPPLES_MAX):
-        start = orders[np.argmax(lombscargle(phi, r, orders, floating_mean=True))]
-        step = 0.25 / revolutions
+        start = _strongest_order(phi, r, (RIPPLE_ORDERS[0], top))
         order = minimize_scalar(lambda f: -_sine(phi, r, f)[1], method="bounded",
                                 bounds=(start - step, start + step)).x
         part, rms = _sine(phi, r, order)
         if (rms / (sigma / math.sqrt(n_eff))) ** 2 <= threshold or \
                 rms <= HARMONIC_RMS_MIN * sigma:
             break
-        nearest = round(order)
-        if abs(order - nearest) > 1 / revolutions or not (
-                nearest in HARMONIC_ORDERS or nearest in known):
-            found.append((float(order), rms))
+        whole = abs(order - round(order)) <= 1 / revolutions
+        if not (whole and (round(order) in HARMONIC_ORDERS or round(order) in known)):
+            found.append((float(order), rms, whole))
         r = r - part
     return found
+
+
+def _strongest_order(phi: np.ndarray, r: np.ndarray, span: tuple[float, float]) -> float:
+    """The order [cycles per WG revolution] within ``span`` where ``r``'s spectrum against
+    the angle ``phi`` (increasing) peaks: ``r`` resampled evenly in the angle, padded
+    fourfold (a quarter of the record's resolution)."""
+    grid = np.linspace(phi[0], phi[-1], len(phi))
+    even = np.interp(grid, phi, r)
+    size = 4 * len(grid)
+    spectrum = np.abs(np.fft.rfft(even - even.mean(), size))
+    orders = np.fft.rfftfreq(size, d=(grid[1] - grid[0]) / (2 * math.pi))
+    inside = (orders >= span[0]) & (orders <= span[1])
+    return float(orders[inside][np.argmax(spectrum[inside])])
 
 
 def _sine(phi: np.ndarray, r: np.ndarray, order: float) -> tuple[np.ndarray, float]:
@@ -199,13 +210,19 @@ def _sine(phi: np.ndarray, r: np.ndarray, order: float) -> tuple[np.ndarray, flo
     return part, float(np.sqrt(np.mean(part ** 2)))
 
 
-def _ripple_text(problem: Problem, order: float, rms: float, sigma: float,
+def _ripple_text(problem: Problem, ripple: tuple[float, float, bool], sigma: float,
                  known: set[int]) -> str:
-    """A ripple as the report says it: beside a named error's order, a sideband of it (the
-    error's amplitude or phase varies faster than its slow form follows); else another
-    rotating member's or a sensor's."""
+    """A ripple (:func:`ripples`) as the report says it: a harmonic of the WG beyond those
+    named; beside a named error's order, a sideband of it (the error's amplitude or phase
+    varies faster than its slow form follows); else another rotating member's or a
+    sensor's."""
+    order, rms, whole = ripple
     size = (f"RMS {rms:.3g} {problem.base.unit}, {rms / sigma:.2f}× the noise"
             if sigma > 0 else f"RMS {rms:.3g} {problem.base.unit}")
+    if whole:
+        return (f"residual at {order:.4g} cycles per WG revolution ({size}), the WG's "
+                f"{round(order)}× harmonic within the record's resolution, beyond those "
+                "named; unexplained")
     near = min(known, key=lambda k: abs(order - k), default=None)
     if near is not None and abs(order - near) < 0.5:
         return (f"residual at {order:.4g} cycles per WG revolution ({size}), a sideband of the "

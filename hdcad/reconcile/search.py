@@ -42,7 +42,8 @@ from .gates import (BIC_MIN, EXPLAINED_MIN, GATE_NOTE, Candidate, Gate, bic_gain
                     gate, has_evidence, round_noise)
 from .loops import THROUGH_GEAR, preisach_forms, series_plays, series_slip, use_preisach
 from .readings import free_scale
-from .refine import fit_viscosity_law, refine_te_order
+from .refine import fit_viscosity_law
+from .te_forms import refine_te_order
 
 __all__ = ["BIC_MIN", "GATE_NOTE", "Candidate", "Gate", "gate", "round_noise", "select_gear",
            "select_rig", "recheck_rig"]
@@ -290,7 +291,7 @@ def _beyond_modulation(problem: Problem, member: str, other: Fit, fit: Fit, sigm
                        tau: float) -> bool:
     """Whether the transmission error ``member`` still earns its place once the other
     error follows its own slow modulation (Legendre order chosen by BIC,
-    :func:`.refine.refine_te_order`). What a modulated error leaves at the naming order is
+    :func:`.te_forms.refine_te_order`). What a modulated error leaves at the naming order is
     its own misfit, which the share rule would ask a second harmonic to explain; another
     harmonic's carrier cannot take that misfit, so the pair, its order chosen the same way,
     is tested against the modulated one by ΔBIC and explained variance (a blocked

@@ -1,0 +1,133 @@
+"""The named transmission errors' final forms, once the effects are chosen: the overtones of
+their harmonic series, a periodic modulation (sidebands) and the Legendre order of their
+slowly varying amplitude and phase.
+
+None changes which effects are named; each makes the reconciled model follow the data as
+closely as the physics and the noise allow, and says what it chose in the notes.
+
+References
+----------
+Seed 000 p.021 (angular transmission error, two cycles per input revolution).
+Schwarz, G. (1978) "Estimating the dimension of a model", Ann. Stat. 6: BIC.
+"""
+
+from __future__ import annotations
+
+from .fitting import Fit, Problem, finish
+from .gates import BIC_MIN, bic_best, bic_gain, effective_n
+from .harmonics import TE_ORDER_MAX, te_order_of
+from .model_columns import nonlinear
+from .noise import correlation_time, noise_rms
+from .regions import ripples
+
+def refine_te_order(problem: Problem, fit: Fit) -> Fit:
+    """The named transmission errors with the Legendre order of their slowly varying
+    amplitude and phase chosen by BIC (effective sample size N/τ, τ from the most flexible
+    fit's residual), from the naming order up to ``TE_ORDER_MAX``; leaves
+    ``problem.te_order`` at it.
+
+    Effects are named at a low order (a flexible TE would take what a second effect
+    explains); once named, a modulated error (amplitude or phase varying over the record)
+    is followed as closely as the data support.
+    """
+    if not any(e.startswith("te_") for e in fit.effects):
+        return fit
+    shapes = len(nonlinear(problem.kind, fit.effects))
+    fits = {}
+    # the widest first: the lower orders' columns are its first ones (cached)
+    for order in [TE_ORDER_MAX, *range(problem.te_order, TE_ORDER_MAX)]:
+        problem.te_order = order
+        fits[order] = finish(problem, fit.effects, fit.theta, shapes)
+    best = bic_best({o: (f.rss, f.n_params) for o, f in fits.items()},
+                     effective_n(problem, fits[TE_ORDER_MAX].residual(problem)))
+    problem.te_order = best
+    return fits[best]
+
+
+# pairs of sidebands k ± j·f_m a named error's periodic modulation may carry: a phase
+# modulation of depth d puts J_j(d) of the error into the j-th pair (J_3(1.2) = 2 %)
+SIDEBANDS_MAX = 2
+
+# overtones a named error may carry [cycles per WG revolution]: the multiples of its order up
+# to the sixth, the highest the residual report looks at (regions.HARMONIC_ORDERS)
+TE_OVERTONES = {"te_1x": (3, 4, 5, 6), "te_2x": (4, 6)}
+
+
+def refine_te_overtones(problem: Problem, fit: Fit) -> Fit:
+    """The named transmission errors with the overtones of their harmonic series that the
+    data support (forward selection, each kept while it lowers the BIC by more than
+    ``BIC_MIN`` at N/τ, τ from the fit with every allowed overtone); leaves
+    ``problem.te_overtones`` at them.
+
+    A wave generator's ellipse is not a pure 2× profile: its series carries 4× and 6×
+    beside the 2×, and a runout's 1× its multiples. They are the named error's own
+    harmonics, not effects of their own. Transmission only: in a run-up an overtone would
+    also excite the resonance at its own speed, which the joint's forced response does not
+    separate from the gear's nonlinearity.
+    """
+    allowed = sorted({k for e in fit.effects for k in TE_OVERTONES.get(e, ())})
+    if problem.kind != "transmission" or not allowed:
+        return fit
+    shapes = len(nonlinear(problem.kind, fit.effects))
+
+    def with_overtones(orders):
+        problem.te_overtones = tuple(sorted(orders))
+        return finish(problem, fit.effects, fit.theta, shapes)
+
+    n_eff = effective_n(problem, with_overtones(allowed).residual(problem))
+    chosen, best = (), fit
+    while len(chosen) < len(allowed):
+        trials = {k: with_overtones(chosen + (k,)) for k in allowed if k not in chosen}
+        k = min(trials, key=lambda j: trials[j].rss)
+        if bic_gain(best, trials[k], n_eff) <= BIC_MIN:
+            break
+        chosen, best = chosen + (k,), trials[k]
+    problem.te_overtones = tuple(sorted(chosen))
+    if chosen:
+        problem.notes.append("transmission error: overtones of the named error's harmonic "
+                             "series kept at " + ", ".join(f"{k}×" for k in sorted(chosen))
+                             + " per WG revolution (BIC)")
+    return best
+
+
+
+def refine_te_sidebands(problem: Problem, fit: Fit) -> Fit:
+    """Transmission: a named error modulated periodically, its sidebands k ± j·f_m beside it
+    (:func:`.harmonics.sidebands`), f_m from a ripple the residual holds within half an
+    order of k (:func:`.regions.ripples`), the first pair and then each next kept while it
+    lowers the BIC by more than ``BIC_MIN`` (f_m counted as a parameter, up to
+    ``SIDEBANDS_MAX`` pairs); leaves ``problem.te_sidebands`` at those kept. A member turning
+    slower than the wave generator (the output, an Oldham coupling, a bearing's cage) whose
+    runout or stiffness changes the error's amplitude or phase every 1/f_m WG revolutions
+    gives such sidebands; the slow Legendre form follows a modulation over the record, not
+    one that repeats within it."""
+    named = {te_order_of(e) for e in fit.effects if e.startswith("te_")}
+    if problem.kind != "transmission" or not named:
+        return fit
+    residual = problem.base.y - fit.prediction
+    rows = residual[problem.rows]
+    found = ripples(problem, residual, noise_rms(rows), correlation_time(rows),
+                    named | set(problem.te_overtones))
+    for order, _, whole in found:
+        near = min(named, key=lambda k: abs(order - k))
+        if whole or abs(order - near) >= 0.5 or near in problem.te_sidebands:
+            continue
+        for count in range(1, SIDEBANDS_MAX + 1):
+            problem.te_sidebands[near] = (abs(order - near), count)
+            shapes = len(nonlinear(problem.kind, fit.effects)) + len(problem.te_sidebands)
+            trial = finish(problem, fit.effects, fit.theta, shapes)
+            if bic_gain(fit, trial, effective_n(problem, trial.residual(problem))) <= BIC_MIN:
+                if count == 1:
+                    del problem.te_sidebands[near]
+                else:
+                    problem.te_sidebands[near] = (abs(order - near), count - 1)
+                break
+            fit = trial
+        if near in problem.te_sidebands:
+            f_m, count = problem.te_sidebands[near]
+            problem.notes.append(
+                f"transmission error: the {near}× error's amplitude or phase varies every "
+                f"{1 / f_m:.3g} WG revolutions; its sidebands at {near} ± "
+                + ", ".join(f"{j * f_m:.3g}" for j in range(1, count + 1))
+                + " cycles per WG revolution kept (BIC)")
+    return fit
