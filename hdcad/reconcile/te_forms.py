@@ -90,7 +90,6 @@ def refine_te_overtones(problem: Problem, fit: Fit) -> Fit:
     return best
 
 
-
 def refine_te_sidebands(problem: Problem, fit: Fit) -> Fit:
     """Transmission: a named error modulated periodically, its sidebands k ± j·f_m beside it
     (:func:`.harmonics.sidebands`), f_m from a ripple the residual holds within half an
