@@ -21,9 +21,8 @@ from __future__ import annotations
 
 from . import effects as fx
 from .fitting import Fit, Problem, fit_model, rss_at
-from .gates import BIC_MIN, bic_gain, effective_n
+from .gates import beyond
 from .harmonics import te_order_of
-from .noise import noise_rms
 
 # a frame other than the fixed one, and a second frame's share, must explain this many noise
 # variances more than the alternative (the fixed frame; the error with a slowly modulated
@@ -70,7 +69,7 @@ def choose_frames(problem: Problem, start: Fit) -> dict[str, Fit]:
 def _better_frame(problem: Problem, k: int, skip: float, frames_of_k: dict[int, float],
                   fit: Fit, *others: Fit) -> tuple[float, Fit] | None:
     """(frame, fit) of order ``k`` other than ``skip`` that beats ``fit`` and ``others`` on
-    :func:`_beyond`, set in ``frames_of_k`` (the problem's ``te_frames`` or
+    :func:`.gates.beyond`, set in ``frames_of_k`` (the problem's ``te_frames`` or
     ``te_second_frames``), or None with ``frames_of_k`` as it was. The frames are compared
     at ``fit``'s damping and stiffness (amplitudes only) and only the best is fitted in
     full, when it already fits better than ``fit`` (polishing the joint is what costs)."""
@@ -84,25 +83,13 @@ def _better_frame(problem: Problem, k: int, skip: float, frames_of_k: dict[int, 
     if best is not None and trials[best] < fit.rss:
         frames_of_k[k] = best
         trial = fit_model(problem, fit.effects, fit.theta)
-        if _beyond(problem, fit, *others, trial):
+        if beyond(problem, fit, *others, trial, explained_min=FRAME_EXPLAINED_MIN):
             return best, trial
     if before is None:
         frames_of_k.pop(k, None)
     else:
         frames_of_k[k] = before
     return None
-
-
-def _beyond(problem: Problem, *alternatives: Fit) -> bool:
-    """The last fit lowers the BIC by more than ``BIC_MIN`` against each of the others
-    (N/τ, τ from its residual) and explains ``FRAME_EXPLAINED_MIN`` noise variances more
-    than the last of them."""
-    *others, trial = alternatives
-    residual = trial.residual(problem)
-    n_eff = effective_n(problem, residual)
-    gained = (others[-1].rss - trial.rss) / len(problem.rows) / noise_rms(residual) ** 2
-    return (min(bic_gain(f, trial, n_eff) for f in others) > BIC_MIN
-            and gained >= FRAME_EXPLAINED_MIN)
 
 
 def refine_frames(problem: Problem, fit: Fit) -> Fit:

@@ -26,7 +26,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .fitting import Fit, Problem
-from .noise import ar1_time, noise_model
+from .noise import ar1_time, noise_model, noise_rms
 from .regions import directions
 
 BIC_MIN = 10.0
@@ -143,6 +143,20 @@ class Candidate:
 def effective_n(problem: Problem, residual: np.ndarray) -> float:
     """N/τ of the fitted rows, τ from the AR(1) noise of ``residual``."""
     return len(problem.rows) / ar1_time(noise_model(residual)[1])
+
+
+def beyond(problem: Problem, *alternatives: Fit, explained_min: float) -> bool:
+    """The last fit lowers the BIC by more than ``BIC_MIN`` against each of the others
+    (N/τ, τ from its residual) and explains ``explained_min`` noise variances more than the
+    last of them (the noise RMS from its residual): a refinement that the BIC alone would
+    take at thousands of rows for a sliver of the misfit is not taken."""
+    *others, trial = alternatives
+    residual = trial.residual(problem)
+    n_eff = effective_n(problem, residual)
+    gained = (others[-1].rss - trial.rss) / len(problem.rows) / (noise_rms(residual) ** 2
+                                                                 or 1e-300)
+    return (min(bic_gain(f, trial, n_eff) for f in others) > BIC_MIN
+            and gained >= explained_min)
 
 
 def bic_best(fits: dict, n_eff: float):

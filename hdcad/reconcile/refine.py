@@ -21,10 +21,9 @@ from . import efficiency_laws as laws
 from .baseline import COMPLIANCE_SCALE_BOUNDS, STIFFNESS_SPREAD
 from .fitting import Fit, Problem, best_setting, fit_model
 from .frames import refine_frames
-from .gates import BIC_MIN, EXPLAINED_MIN, bic_best, bic_gain, effective_n
+from .gates import EXPLAINED_MIN, beyond, bic_best, effective_n
 from .joint_fit import refine_spring
 from .loops import refine_hysteresis, refine_plays, refine_preisach
-from .noise import noise_rms
 from .readings import free_scale
 from .te_forms import refine_te_order, refine_te_overtones, refine_te_sidebands
 
@@ -50,23 +49,23 @@ def refine(problem: Problem, fit: Fit) -> Fit:
     put it beyond the catalog's spread."""
     fit = refine_frames(problem, fit)
     steady = refine_damping(problem, fit)
-    curved = refine_spring(problem, fit) if steady is fit else fit
-    if curved is fit:
-        fit = refine_te_sidebands(problem, refine_te_overtones(problem, steady))
-        fit = refine_hysteresis(problem, refine_viscosity(problem, refine_low_load(
-            problem, refine_te_order(problem, fit))))
-        fit = refine_plays(problem, refine_preisach(problem, refine_play(problem, fit)))
-        return refine_stiffness(problem, fit)
-    return curved
+    if steady is fit:  # the viscous joint, on the catalog curve where the twist leaves K1
+        curved = refine_spring(problem, fit)
+        if curved is not fit:
+            return curved
+    fit = refine_te_sidebands(problem, refine_te_overtones(problem, steady))
+    fit = refine_hysteresis(problem, refine_viscosity(problem, refine_low_load(
+        problem, refine_te_order(problem, fit))))
+    fit = refine_plays(problem, refine_preisach(problem, refine_play(problem, fit)))
+    return refine_stiffness(problem, fit)
 
 
 def refine_damping(problem: Problem, fit: Fit) -> Fit:
     """Vibration: the linear joint's response as the steady state through a spring with
     structural damping (:func:`.joint.steady_response`, loss factor η = 2ζ) in place of the
     viscous joint's run-up, kept when it lowers the BIC by more than ``BIC_MIN`` (the same
-    parameters; the effective sample size from its residual) and explains
-    ``EXPLAINED_MIN`` noise variances more (the gates of an effect: at thousands of rows a
-    sliver of a viscous joint's misfit passes the BIC alone). A material's loss factor
+    parameters) and explains ``EXPLAINED_MIN`` noise variances more (:func:`.gates.beyond`:
+    at thousands of rows a sliver of a viscous joint's misfit passes the BIC alone). A material's loss factor
     hardly changes with frequency, so structural damping damps the resonance as a viscous
     ζ = η/2 does but the response off it differently, and it has no free vibration after
     the resonance: a slow sweep or order-tracked data carry none."""
@@ -75,10 +74,7 @@ def refine_damping(problem: Problem, fit: Fit) -> Fit:
         return fit
     problem.steady_state = True
     best = fit_model(problem, fit.effects, fit.theta)
-    residual = best.residual(problem)
-    explained = (fit.rss - best.rss) / len(residual) / (noise_rms(residual) ** 2 or 1e-300)
-    if bic_gain(fit, best, effective_n(problem, residual)) <= BIC_MIN or \
-            explained < EXPLAINED_MIN:
+    if not beyond(problem, fit, best, explained_min=EXPLAINED_MIN):
         problem.steady_state = False
         return fit
     problem.notes.append(

@@ -16,6 +16,7 @@ from scipy.optimize import minimize_scalar
 
 from .fitting import Problem
 from .harmonics import harmonic, te_order_of
+from .rig import periodogram_peak
 
 # Significance of a region or a harmonic: z-score against the noise, and a floor relative
 # to the noise so that negligible structure is not reported.
@@ -148,8 +149,8 @@ def ripples(problem: Problem, residual: np.ndarray, sigma: float, tau: float,
     orders that are neither in ``HARMONIC_ORDERS`` (reported by :func:`harmonics`) nor in
     ``known``, the strongest first.
 
-    The residual's spectrum against the WG angle (resampled evenly in the angle, padded
-    fourfold) gives the strongest order in ``RIPPLE_ORDERS``, refined to the best-fitting
+    The residual's periodogram against the WG angle (:func:`.rig.periodogram_peak`, a bin
+    per row) gives the strongest order in ``RIPPLE_ORDERS``, refined to the best-fitting
     sine on the samples themselves; it is significant when its RMS exceeds the noise's
     standard error σ/√N_eff by ``HARMONIC_Z`` standard errors with the look-elsewhere cost
     of the orders scanned added (z² > Z² + ln M, M the independent orders: a white noise's
@@ -174,7 +175,9 @@ def ripples(problem: Problem, residual: np.ndarray, sigma: float, tau: float,
     step = 0.25 / revolutions
     found = []
     for _ in range(RIPPLES_MAX):
-        start = _strongest_order(phi, r, (RIPPLE_ORDERS[0], top))
+        start = 2 * math.pi * periodogram_peak(r, phi, len(phi),
+                                              (RIPPLE_ORDERS[0] / (2 * math.pi),
+                                               top / (2 * math.pi)))
         order = minimize_scalar(lambda f: -_sine(phi, r, f)[1], method="bounded",
                                 bounds=(start - step, start + step)).x
         part, rms = _sine(phi, r, order)
@@ -186,19 +189,6 @@ def ripples(problem: Problem, residual: np.ndarray, sigma: float, tau: float,
             found.append((float(order), rms, whole))
         r = r - part
     return found
-
-
-def _strongest_order(phi: np.ndarray, r: np.ndarray, span: tuple[float, float]) -> float:
-    """The order [cycles per WG revolution] within ``span`` where ``r``'s spectrum against
-    the angle ``phi`` (increasing) peaks: ``r`` resampled evenly in the angle, padded
-    fourfold (a quarter of the record's resolution)."""
-    grid = np.linspace(phi[0], phi[-1], len(phi))
-    even = np.interp(grid, phi, r)
-    size = 4 * len(grid)
-    spectrum = np.abs(np.fft.rfft(even - even.mean(), size))
-    orders = np.fft.rfftfreq(size, d=(grid[1] - grid[0]) / (2 * math.pi))
-    inside = (orders >= span[0]) & (orders <= span[1])
-    return float(orders[inside][np.argmax(spectrum[inside])])
 
 
 def _sine(phi: np.ndarray, r: np.ndarray, order: float) -> tuple[np.ndarray, float]:

@@ -220,11 +220,8 @@ def ripple_everywhere(before: np.ndarray, after: np.ndarray, angle: np.ndarray) 
 
 def angle_period(residual: np.ndarray, angle: np.ndarray) -> float:
     """Signal period [unit of ``angle``] of the strongest ripple of ``residual`` that
-    repeats in the measured ``angle``: the peak of the periodogram over the angle, the rows
-    (unevenly spread in it) summed into bins of a uniform grid of a quarter of the shortest
-    period and transformed by FFT, zero-padded to steps of a quarter of the record's
-    resolution 1/span (a binned stand-in for the Lomb–Scargle periodogram of unevenly
-    sampled data; Lomb 1976, Scargle 1982)."""
+    repeats in the measured ``angle``: the peak of its periodogram over the angle
+    (:func:`periodogram_peak`, bins of a quarter of the shortest period)."""
     span = float(np.ptp(angle)) or 1.0
     # rows at the same angle (the readings of a dwell) count once; a period near the step of
     # a quantised reading would alias into a slow function of it
@@ -234,11 +231,22 @@ def angle_period(residual: np.ndarray, angle: np.ndarray) -> float:
     if shortest >= longest:
         return longest
     bins = int(np.ceil(4 * span / shortest))
-    summed = np.bincount(_bins(angle, span, bins), residual - residual.mean(), bins)
+    return 1.0 / periodogram_peak(residual, angle, bins, (1.0 / longest, 1.0 / shortest))
+
+
+def periodogram_peak(values: np.ndarray, angle: np.ndarray, bins: int,
+                     band: tuple[float, float]) -> float:
+    """Frequency [1/unit of ``angle``] within ``band`` (low, high) where the periodogram of
+    ``values`` over ``angle`` peaks: the rows summed into ``bins`` bins of a uniform grid
+    over the span and transformed by FFT, zero-padded fourfold to steps of a quarter of the
+    record's resolution 1/span (a binned stand-in for the Lomb–Scargle periodogram of
+    unevenly sampled data; Lomb 1976, Scargle 1982)."""
+    span = float(np.ptp(angle)) or 1.0
+    summed = np.bincount(_bins(angle, span, bins), values - values.mean(), bins)
     power = np.abs(np.fft.rfft(summed, 4 * bins)) ** 2
     freqs = np.fft.rfftfreq(4 * bins, span / bins)
-    inside = (freqs >= 1.0 / longest) & (freqs <= 1.0 / shortest)
-    return float(1.0 / freqs[inside][int(np.argmax(power[inside]))])
+    inside = (freqs >= band[0]) & (freqs <= band[1])
+    return float(freqs[inside][int(np.argmax(power[inside]))])
 
 
 def _bins(angle: np.ndarray, span: float, count: int) -> np.ndarray:

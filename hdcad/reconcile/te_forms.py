@@ -111,22 +111,21 @@ def refine_te_sidebands(problem: Problem, fit: Fit) -> Fit:
         near = min(named, key=lambda k: abs(order - k))
         if whole or abs(order - near) >= 0.5 or near in problem.te_sidebands:
             continue
+        f_m, kept = abs(order - near), 0
         for count in range(1, SIDEBANDS_MAX + 1):
-            problem.te_sidebands[near] = (abs(order - near), count)
+            problem.te_sidebands[near] = (f_m, count)
             shapes = len(nonlinear(problem.kind, fit.effects)) + len(problem.te_sidebands)
             trial = finish(problem, fit.effects, fit.theta, shapes)
             if bic_gain(fit, trial, effective_n(problem, trial.residual(problem))) <= BIC_MIN:
-                if count == 1:
-                    del problem.te_sidebands[near]
-                else:
-                    problem.te_sidebands[near] = (abs(order - near), count - 1)
                 break
-            fit = trial
-        if near in problem.te_sidebands:
-            f_m, count = problem.te_sidebands[near]
+            fit, kept = trial, count
+        if not kept:
+            del problem.te_sidebands[near]
+        else:
+            problem.te_sidebands[near] = (f_m, kept)
             problem.notes.append(
                 f"transmission error: the {near}× error's amplitude or phase varies every "
                 f"{1 / f_m:.3g} WG revolutions; its sidebands at {near} ± "
-                + ", ".join(f"{j * f_m:.3g}" for j in range(1, count + 1))
+                + ", ".join(f"{j * f_m:.3g}" for j in range(1, kept + 1))
                 + " cycles per WG revolution kept (BIC)")
     return fit
