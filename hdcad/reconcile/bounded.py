@@ -73,7 +73,7 @@ def _active_set(R: np.ndarray, c: np.ndarray, lo: np.ndarray, hi: np.ndarray
                 ) -> np.ndarray | None:
     """The bounded solution of ‖R·b − c‖² (R square, upper triangular, full rank), or None
     when it is not settled in ``MAX_ROUNDS`` rounds."""
-    b = solve_triangular(R, c)
+    b = solve_triangular(R, c, check_finite=False)
     side = np.where(b <= lo, -1, np.where(b >= hi, 1, 0))  # at the lower, upper bound, free
     if not side.any():
         return b

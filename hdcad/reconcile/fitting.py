@@ -113,6 +113,12 @@ class Problem:
     # flank: a slider's weight on a horizontal axis): 0 while effects are named, fitted once
     # backlash is (refine.refine_play)
     play_bias: float = 0.0
+    # a play's lost motion along the record: its Legendre order (a clearance that grows
+    # with wear or warmth) or the record position of one step in it (a play that depends on
+    # where the input was locked): 0 and None while effects are named, chosen by BIC once
+    # backlash is (refine.refine_play_drift)
+    play_drift: int = 0
+    play_step: float | None = None
     # the member each harmonic's error turns with (k → δ: its angle k·(1 + δ)·φ, φ the WG
     # angle): δ = 0 the fixed circular spline, else the output member's (frames.frames);
     # and a second member's share at constant amplitude (frames.refine_frames)

@@ -20,7 +20,7 @@ from . import efficiency_laws as laws
 from . import effects as fx
 from . import plays, rig
 from .effects import key_of
-from .harmonics import (harmonic, overtones_of, sideband_labels, sidebands,
+from .harmonics import (harmonic, legendre, overtones_of, sideband_labels, sidebands,
                         te_column_labels, te_order_of)
 
 if TYPE_CHECKING:
@@ -35,6 +35,11 @@ def nonlinear(kind: str, effects: tuple[str, ...]) -> dict[str, fx.Parameter]:
         for p in parameters_of(name, kind):
             out.setdefault(key_of(name, p.name), p)
     return out
+
+
+def drift_labels(order: int) -> list[str]:
+    """Labels of a play's lost motion along the record: its Legendre terms 1 … ``order``."""
+    return [f"lost_motion_p{k}" for k in range(1, order + 1)]
 
 
 def parameters_of(name: str, kind: str) -> tuple[fx.Parameter, ...]:
@@ -100,7 +105,13 @@ def columns(problem: Problem, effects: tuple[str, ...], theta: dict[str, float],
             if problem.play_hold:
                 torque = torque - inp["branch_direction"] * (
                     problem.play_hold * problem.scales["T0"])
-            add(name, ["lost_motion"], fx.backlash_twist(torque, 1.0, th["T_w"]), 0.0)
+            play = fx.backlash_twist(torque, 1.0, th["T_w"])
+            add(name, ["lost_motion"], play, 0.0)
+            if problem.play_drift:  # the lost motion along the record: P1 … P_K of its position
+                add(name, drift_labels(problem.play_drift), np.column_stack(
+                    [p * play for p in legendre(inp["record_position"], problem.play_drift)[1:]]))
+            if problem.play_step is not None:  # a step in the lost motion at that position
+                add(name, ["lost_motion_step"], play * (inp["record_position"] >= problem.play_step))
         elif name == "housing_compliance":
             add(name, ["compliance"], fx.progressive_twist(inp["torque_Nm"],
                                                            problem.housing_knee), 0.0)

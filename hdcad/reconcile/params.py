@@ -11,13 +11,26 @@ from . import effects as fx
 from . import plays
 from .effects import key_of
 from .fitting import Fit, Problem
-from .model_columns import parameters_of
+from .model_columns import drift_labels, parameters_of
 from .harmonics import TE_LABELS, frames_of, legendre, te_order_of
 from .rig import RIG_EFFECTS, TORQUE_GAIN_KEY
 
 
 def _linear(fit: Fit, effect: str) -> dict[str, float]:
     return {name: float(v) for (e, name), v in zip(fit.labels, fit.beta) if e == effect}
+
+
+def play_along_record(problem: Problem, fit: Fit, points: int = 201
+                      ) -> tuple[float, float, float, float]:
+    """(start, end, least, largest) of a play's lost motion [rad] along the record, from its
+    Legendre terms or its step in ``fit`` (:func:`.refine.refine_play_drift`)."""
+    b = _linear(fit, "backlash")
+    u = np.linspace(-1.0, 1.0, points)
+    along = np.polynomial.legendre.legval(
+        u, [b["lost_motion"]] + [b[k] for k in drift_labels(problem.play_drift)])
+    if problem.play_step is not None:
+        along = along + b["lost_motion_step"] * (u >= problem.play_step)
+    return float(along[0]), float(along[-1]), float(along.min()), float(along.max())
 
 
 def rig_params(problem: Problem, fit: Fit, effect: str) -> dict[str, dict]:
@@ -158,6 +171,11 @@ def effect_params(problem: Problem, fit: Fit, effect: str) -> dict[str, dict]:
         out["slip_compliance"] = (b["z_sat"] / th["T_s"], "rad/(N·m)")
     elif effect == "backlash":
         out = {"lost_motion": (b["lost_motion"], "rad"), "T_w": (th["T_w"], "N·m")}
+        if problem.play_drift or problem.play_step is not None:  # where it starts and ends
+            start, end, _, _ = play_along_record(problem, fit)
+            out.update({"lost_motion_at_start": (start, "rad"), "lost_motion_at_end": (end, "rad")})
+        if problem.play_step is not None:
+            out["step_at_record_position"] = (problem.play_step, "-")
     elif effect == "housing_compliance":
         c = b["compliance"]
         out = {"K_h": (1.0 / c if c > 0 else math.inf, "N·m/rad"), "compliance": (c, "rad/(N·m)")}

@@ -1,8 +1,9 @@
 """Refinements of the named model once the effects are chosen: the joint's damping, the
 temperature law's viscosity law and speed term, a low-load drag that grows with the oil's
-viscosity, a play held by friction and the gear's stiffness beyond its spread. The
-transmission error's forms (:mod:`.te_forms`), the joint's spring on the catalog curve
-(:mod:`.joint_fit`) and the loop's form (:mod:`.loops`) are chosen from here too.
+viscosity, a play held by friction or changing along the record, and the gear's stiffness
+beyond its spread. The transmission error's forms (:mod:`.te_forms`), the joint's spring on
+the catalog curve (:mod:`.joint_fit`) and the loop's form (:mod:`.loops`) are chosen from
+here too.
 
 None changes which effects are named; each makes the reconciled model follow the data as
 closely as the physics and the noise allow, and says what it chose in the notes.
@@ -19,12 +20,14 @@ from scipy.optimize import minimize_scalar
 
 from . import efficiency_laws as laws
 from .baseline import COMPLIANCE_SCALE_BOUNDS, STIFFNESS_SPREAD
-from .fitting import Fit, Problem, best_setting, fit_model
+from .fitting import Fit, Problem, best_setting, finish, fit_model
 from .frames import refine_frames
 from .gates import EXPLAINED_MIN, beyond, bic_best, effective_n
 from .joint_fit import refine_spring
 from .loops import refine_hysteresis, refine_plays, refine_preisach
+from .params import play_along_record
 from .readings import free_scale
+from .rig import step_position
 from .te_forms import refine_te_order, refine_te_overtones, refine_te_sidebands
 
 _SPEED_LOSS_BOUNDS = (-0.5, 0.9)  # as the viscous share a of the temperature law
@@ -33,6 +36,9 @@ _SPEED_LOSS_BOUNDS = (-0.5, 0.9)  # as the viscous share a of the temperature la
 _DRAG_VISCOSITY_BOUNDS = (0.0, 2.0)
 _PLAY_HOLD_BOUNDS = (0.0, 0.3)  # holding torque of a play, as a share of the largest torque
 _PLAY_BIAS_BOUNDS = (-0.15, 0.15)  # torque a play is crossed at, as a share of the largest
+# highest Legendre order of a play's lost motion along the record (a step is a form of its
+# own)
+PLAY_DRIFT_MAX = 6
 # a band of temperature over which a loss changes: centres between the temperatures tested
 # (at most this many), widths [K] from a step between two of them to a gradual change
 _BAND_CENTRES = 8
@@ -43,8 +49,8 @@ def refine(problem: Problem, fit: Fit) -> Fit:
     """The named model's final form: the named errors' frames, then the joint's steady state
     with structural damping, or else the joint on the catalog curve where the twist leaves
     its first segment (vibration); otherwise the TE's overtones and modulation order, the
-    viscosity law, the loop's Bouc–Wen form, a play held by friction,
-    then a Preisach relay sum in place of the Bouc–Wen loop, and a sum of friction elements
+    viscosity law, the loop's Bouc–Wen form, a play held by friction and its lost motion
+    along the record, then a Preisach relay sum in place of the Bouc–Wen loop, and a sum of friction elements
     in place of either, where BIC prefers them; last, the gear's stiffness where the data
     put it beyond the catalog's spread."""
     fit = refine_frames(problem, fit)
@@ -56,7 +62,8 @@ def refine(problem: Problem, fit: Fit) -> Fit:
     fit = refine_te_sidebands(problem, refine_te_overtones(problem, steady))
     fit = refine_hysteresis(problem, refine_viscosity(problem, refine_low_load(
         problem, refine_te_order(problem, fit))))
-    fit = refine_plays(problem, refine_preisach(problem, refine_play(problem, fit)))
+    fit = refine_play_drift(problem, refine_play(problem, fit))
+    fit = refine_plays(problem, refine_preisach(problem, fit))
     return refine_stiffness(problem, fit)
 
 
@@ -129,6 +136,61 @@ def refine_play(problem: Problem, fit: Fit) -> Fit:
     return _one_more(problem, fit, "play_bias", _PLAY_BIAS_BOUNDS, lambda c: (
         f"backlash: the play is crossed at {c * t0:.3g} N·m, not at zero torque (a steady "
         "torque preloads one flank: a slider's weight on a horizontal axis, a drag)"))
+
+
+def refine_play_drift(problem: Problem, fit: Fit) -> Fit:
+    """A named backlash whose lost motion changes along the record: b(u) = b0 + Σ b_k·P_k(u),
+    u the record's position (−1 … 1), Legendre order 1 … ``PLAY_DRIFT_MAX``, or one step
+    b0 + d·[u ≥ u_s] at the likeliest position (:func:`.rig.step_position` of the residual
+    along the play's column); the form chosen by BIC with the shapes held, kept when it
+    passes :func:`.gates.beyond` (ΔBIC > ``BIC_MIN`` and ``EXPLAINED_MIN`` noise variances
+    more), then the shapes polished with it. A clearance grows with wear and with the gear's
+    temperature over a test; a play seen at the output depends on where the input was
+    locked, which a test in two parts changes once. The amplitudes are linear, so each form
+    costs one solve. Leaves ``problem.play_drift`` and ``problem.play_step`` at the form
+    kept."""
+    if problem.kind != "torsion" or "backlash" not in fit.effects:
+        return fit
+    trials = _drift_trials(problem, fit)
+    n_eff = effective_n(problem, fit.residual(problem))
+    form = bic_best({k: (f.rss, f.n_params) for k, f in trials.items()}, n_eff)
+    if not beyond(problem, fit, trials[form], explained_min=EXPLAINED_MIN):
+        return fit
+    problem.play_drift, problem.play_step = form
+    drifted = fit_model(problem, fit.effects, fit.theta)
+    drifted = (replace(drifted, n_params=trials[form].n_params)
+               if drifted.rss < trials[form].rss else trials[form])
+    start, end, low, high = play_along_record(problem, drifted)
+    if problem.play_step is not None:
+        problem.notes.append(
+            f"backlash: the lost motion steps from {start:.3g} to {end:.3g} rad at "
+            f"{(1.0 + problem.play_step) / 2.0:.0%} of the record (BIC): a play seen through "
+            "an input locked at another angle, or a test resumed after a change")
+    else:
+        problem.notes.append(
+            f"backlash: the lost motion changes along the record, from {start:.3g} rad at its "
+            f"start to {end:.3g} rad at its end (between {low:.3g} and {high:.3g}; Legendre "
+            f"order {problem.play_drift} in the record's position, BIC): a clearance that "
+            "grows with wear or with the gear's temperature")
+    return drifted
+
+
+def _drift_trials(problem: Problem, fit: Fit) -> dict[tuple[int, float | None], Fit]:
+    """{(Legendre order, step position): fit with the shapes held} of a play's lost motion
+    along the record; leaves the problem's form at none."""
+    shapes = fit.n_params - int(np.count_nonzero(fit.beta))
+    trials = {}
+    for order in range(1, PLAY_DRIFT_MAX + 1):
+        problem.play_drift = order
+        trials[(order, None)] = finish(problem, fit.effects, fit.theta, shapes)
+    problem.play_drift = 0
+    play = fit.columns[:, fit.labels.index(("backlash", "lost_motion"))]
+    problem.play_step = step_position(fit.residual(problem) * play / np.max(np.abs(play)),
+                                      problem.base.inputs["record_position"][problem.rows])
+    step = finish(problem, fit.effects, fit.theta, shapes)
+    trials[(0, problem.play_step)] = replace(step, n_params=step.n_params + 1)  # u_s
+    problem.play_step = None
+    return trials
 
 
 def refine_low_load(problem: Problem, fit: Fit) -> Fit:
