@@ -36,9 +36,13 @@ _SPEED_LOSS_BOUNDS = (-0.5, 0.9)  # as the viscous share a of the temperature la
 _DRAG_VISCOSITY_BOUNDS = (0.0, 2.0)
 _PLAY_HOLD_BOUNDS = (0.0, 0.3)  # holding torque of a play, as a share of the largest torque
 _PLAY_BIAS_BOUNDS = (-0.15, 0.15)  # torque a play is crossed at, as a share of the largest
-# highest Legendre order of a play's lost motion along the record (a step is a form of its
-# own)
-PLAY_DRIFT_MAX = 6
+# highest Legendre order of a play's lost motion along the record: wear and warmth change a
+# clearance smoothly one way over a test, a line or a parabola (higher orders took an
+# unmodelled creep or a start-up transient for a clearance swinging up and down), and a
+# step is a form of its own; the span of record positions a step is looked for in (the
+# play crossed often enough on either side of it)
+PLAY_DRIFT_MAX = 2
+PLAY_STEP_SPAN = 0.8
 # a band of temperature over which a loss changes: centres between the temperatures tested
 # (at most this many), widths [K] from a step between two of them to a gradual change
 _BAND_CENTRES = 8
@@ -141,55 +145,60 @@ def refine_play(problem: Problem, fit: Fit) -> Fit:
 def refine_play_drift(problem: Problem, fit: Fit) -> Fit:
     """A named backlash whose lost motion changes along the record: b(u) = b0 + Σ b_k·P_k(u),
     u the record's position (−1 … 1), Legendre order 1 … ``PLAY_DRIFT_MAX``, or one step
-    b0 + d·[u ≥ u_s] at the likeliest position (:func:`.rig.step_position` of the residual
-    along the play's column); the form chosen by BIC with the shapes held, kept when it
+    b0 + d·[u ≥ u_s] at the likeliest position within ±``PLAY_STEP_SPAN`` (:func:`.rig.
+    step_position` of the residual along the play's column); of the forms whose lost motion
+    stays ≥ 0 along the record, the one BIC prefers with the shapes held, kept when it
     passes :func:`.gates.beyond` (ΔBIC > ``BIC_MIN`` and ``EXPLAINED_MIN`` noise variances
     more), then the shapes polished with it. A clearance grows with wear and with the gear's
-    temperature over a test; a play seen at the output depends on where the input was
+    temperature over a test (wear only where the play is crossed, so in steps when the
+    crossings come in blocks); a play seen at the output depends on where the input was
     locked, which a test in two parts changes once. The amplitudes are linear, so each form
     costs one solve. Leaves ``problem.play_drift`` and ``problem.play_step`` at the form
     kept."""
     if problem.kind != "torsion" or "backlash" not in fit.effects:
         return fit
     trials = _drift_trials(problem, fit)
+    if not trials:
+        return fit
     n_eff = effective_n(problem, fit.residual(problem))
     form = bic_best({k: (f.rss, f.n_params) for k, f in trials.items()}, n_eff)
     if not beyond(problem, fit, trials[form], explained_min=EXPLAINED_MIN):
         return fit
     problem.play_drift, problem.play_step = form
     drifted = fit_model(problem, fit.effects, fit.theta)
-    drifted = (replace(drifted, n_params=trials[form].n_params)
-               if drifted.rss < trials[form].rss else trials[form])
-    start, end, low, high = play_along_record(problem, drifted)
-    if problem.play_step is not None:
-        problem.notes.append(
-            f"backlash: the lost motion steps from {start:.3g} to {end:.3g} rad at "
-            f"{(1.0 + problem.play_step) / 2.0:.0%} of the record (BIC): a play seen through "
-            "an input locked at another angle, or a test resumed after a change")
+    if drifted.rss < trials[form].rss and play_along_record(problem, drifted)[2] >= 0.0:
+        drifted = replace(drifted, n_params=trials[form].n_params)
     else:
-        problem.notes.append(
-            f"backlash: the lost motion changes along the record, from {start:.3g} rad at its "
-            f"start to {end:.3g} rad at its end (between {low:.3g} and {high:.3g}; Legendre "
-            f"order {problem.play_drift} in the record's position, BIC): a clearance that "
-            "grows with wear or with the gear's temperature")
+        drifted = trials[form]
+    start, end, low, high = play_along_record(problem, drifted)
+    form_text = (f"one step at {(1.0 + problem.play_step) / 2.0:.0%} of the record"
+                 if problem.play_step is not None else
+                 f"Legendre order {problem.play_drift} in the record's position")
+    problem.notes.append(
+        f"backlash: the lost motion changes along the record, from {start:.3g} rad at its "
+        f"start to {end:.3g} rad at its end (between {low:.3g} and {high:.3g}; {form_text}, "
+        "BIC): a clearance that grows with wear or with the gear's temperature, or a play "
+        "seen through an input locked at another angle")
     return drifted
 
 
 def _drift_trials(problem: Problem, fit: Fit) -> dict[tuple[int, float | None], Fit]:
     """{(Legendre order, step position): fit with the shapes held} of a play's lost motion
-    along the record; leaves the problem's form at none."""
+    along the record, the forms whose lost motion stays ≥ 0 (a clearance); leaves the
+    problem's form at none."""
     shapes = fit.n_params - int(np.count_nonzero(fit.beta))
-    trials = {}
-    for order in range(1, PLAY_DRIFT_MAX + 1):
-        problem.play_drift = order
-        trials[(order, None)] = finish(problem, fit.effects, fit.theta, shapes)
-    problem.play_drift = 0
     play = fit.columns[:, fit.labels.index(("backlash", "lost_motion"))]
-    problem.play_step = step_position(fit.residual(problem) * play / np.max(np.abs(play)),
-                                      problem.base.inputs["record_position"][problem.rows])
-    step = finish(problem, fit.effects, fit.theta, shapes)
-    trials[(0, problem.play_step)] = replace(step, n_params=step.n_params + 1)  # u_s
-    problem.play_step = None
+    u = problem.base.inputs["record_position"][problem.rows]
+    inner = np.abs(u) <= PLAY_STEP_SPAN
+    step = step_position((fit.residual(problem) * play / np.max(np.abs(play)))[inner], u[inner])
+    forms = [(order, None) for order in range(1, PLAY_DRIFT_MAX + 1)] + [(0, step)]
+    trials = {}
+    for form in forms:
+        problem.play_drift, problem.play_step = form
+        trial = finish(problem, fit.effects, fit.theta, shapes)
+        if play_along_record(problem, trial)[2] >= 0.0:
+            trials[form] = replace(trial, n_params=trial.n_params + (form[1] is not None))
+    problem.play_drift, problem.play_step = 0, None
     return trials
 
 
