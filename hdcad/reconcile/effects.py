@@ -332,7 +332,7 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                      "Oldham coupling (the tooth mesh has none), measured at the output with "
                      "the input locked (seed 000 p.020; table 052-2/060-2; FD 314-1)."),
         form=("θ = θ_catalog(T) + (b/2)·tanh(T/T_w); once named, b may change along the "
-              "record u: b0 + Σ b_k·P_k(u) or a step b0 + d·[u ≥ u_s]"),
+              "record u: b0 + b1·P1(u) + b2·P2(u) or a step b0 + d·[u ≥ u_s]"),
         parameters=(
             Parameter("lost_motion", "rad", "lost motion b", 0.0, 20.0, "backlash_rad",
                       linear=True),

@@ -111,7 +111,8 @@ def columns(problem: Problem, effects: tuple[str, ...], theta: dict[str, float],
                 add(name, drift_labels(problem.play_drift), np.column_stack(
                     [p * play for p in legendre(inp["record_position"], problem.play_drift)[1:]]))
             if problem.play_step is not None:  # a step in the lost motion at that position
-                add(name, ["lost_motion_step"], play * (inp["record_position"] >= problem.play_step))
+                after = inp["record_position"] >= problem.play_step
+                add(name, ["lost_motion_step"], play * after)
         elif name == "housing_compliance":
             add(name, ["compliance"], fx.progressive_twist(inp["torque_Nm"],
                                                            problem.housing_knee), 0.0)

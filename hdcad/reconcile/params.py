@@ -173,9 +173,10 @@ def effect_params(problem: Problem, fit: Fit, effect: str) -> dict[str, dict]:
         out = {"lost_motion": (b["lost_motion"], "rad"), "T_w": (th["T_w"], "N·m")}
         if problem.play_drift or problem.play_step is not None:  # where it starts and ends
             start, end, _, _ = play_along_record(problem, fit)
-            out.update({"lost_motion_at_start": (start, "rad"), "lost_motion_at_end": (end, "rad")})
-        if problem.play_step is not None:
-            out["step_at_record_position"] = (problem.play_step, "-")
+            out.update({"lost_motion_at_start": (start, "rad"),
+                        "lost_motion_at_end": (end, "rad")})
+        if problem.play_step is not None:  # 0 at the record's first row, 1 at its last
+            out["step_at_share_of_record"] = ((1.0 + problem.play_step) / 2.0, "-")
     elif effect == "housing_compliance":
         c = b["compliance"]
         out = {"K_h": (1.0 / c if c > 0 else math.inf, "N·m/rad"), "compliance": (c, "rad/(N·m)")}

@@ -42,7 +42,7 @@ LIMIT = 3.0
 DECAY = 0.8
 DEMAG_END = 1e-3
 # Gauss–Hermite nodes for the integral over the relays' centres; the six outermost of 24
-# weigh below 2e-10 together (the Everett function is a mass ≤ 1), so they are left out
+# weigh 3.4e-10 together (the Everett function is a mass ≤ 1), so they are left out
 _NODES, _WEIGHTS = np.polynomial.hermite.hermgauss(24)
 _KEPT = _WEIGHTS / math.sqrt(math.pi) > 1e-9
 _NODES, _WEIGHTS = _NODES[_KEPT], _WEIGHTS[_KEPT] / math.sqrt(math.pi)

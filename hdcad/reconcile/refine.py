@@ -54,9 +54,9 @@ def refine(problem: Problem, fit: Fit) -> Fit:
     with structural damping, or else the joint on the catalog curve where the twist leaves
     its first segment (vibration); otherwise the TE's overtones and modulation order, the
     viscosity law, the loop's Bouc–Wen form, a play held by friction and its lost motion
-    along the record, then a Preisach relay sum in place of the Bouc–Wen loop, and a sum of friction elements
-    in place of either, where BIC prefers them; last, the gear's stiffness where the data
-    put it beyond the catalog's spread."""
+    along the record, then a Preisach relay sum in place of the Bouc–Wen loop, and a sum of
+    friction elements in place of either, where BIC prefers them; last, the gear's stiffness
+    where the data put it beyond the catalog's spread."""
     fit = refine_frames(problem, fit)
     steady = refine_damping(problem, fit)
     if steady is fit:  # the viscous joint, on the catalog curve where the twist leaves K1
