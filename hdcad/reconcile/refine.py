@@ -166,7 +166,7 @@ def refine_play_drift(problem: Problem, fit: Fit) -> Fit:
         return fit
     problem.play_drift, problem.play_step = form
     drifted = fit_model(problem, fit.effects, fit.theta)
-    if drifted.rss < trials[form].rss and play_along_record(problem, drifted)[2] >= 0.0:
+    if drifted.rss < trials[form].rss and _a_clearance(problem, drifted):
         drifted = replace(drifted, n_params=trials[form].n_params)
     else:
         drifted = trials[form]
@@ -190,16 +190,22 @@ def _drift_trials(problem: Problem, fit: Fit) -> dict[tuple[int, float | None], 
     play = fit.columns[:, fit.labels.index(("backlash", "lost_motion"))]
     u = problem.base.inputs["record_position"][problem.rows]
     inner = np.abs(u) <= PLAY_STEP_SPAN
-    step = step_position((fit.residual(problem) * play / np.max(np.abs(play)))[inner], u[inner])
+    step = step_position((fit.residual(problem) * play)[inner], u[inner])
     forms = [(order, None) for order in range(1, PLAY_DRIFT_MAX + 1)] + [(0, step)]
     trials = {}
     for form in forms:
         problem.play_drift, problem.play_step = form
         trial = finish(problem, fit.effects, fit.theta, shapes)
-        if play_along_record(problem, trial)[2] >= 0.0:
-            trials[form] = replace(trial, n_params=trial.n_params + (form[1] is not None))
+        if _a_clearance(problem, trial):
+            position = 0 if form[1] is None else 1  # the step's position is a parameter
+            trials[form] = replace(trial, n_params=trial.n_params + position)
     problem.play_drift, problem.play_step = 0, None
     return trials
+
+
+def _a_clearance(problem: Problem, fit: Fit) -> bool:
+    """The play's lost motion in ``fit`` stays ≥ 0 along the whole record."""
+    return play_along_record(problem, fit)[2] >= 0.0
 
 
 def refine_low_load(problem: Problem, fit: Fit) -> Fit:

@@ -20,6 +20,7 @@ from .model_columns import nonlinear
 from .noise import correlation_time, noise_rms
 from .regions import ripples
 
+
 def refine_te_order(problem: Problem, fit: Fit) -> Fit:
     """The named transmission errors with the Legendre order of their slowly varying
     amplitude and phase chosen by BIC (effective sample size N/τ, τ from the most flexible
