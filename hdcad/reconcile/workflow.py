@@ -18,7 +18,7 @@
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 from scipy.ndimage import median_filter
@@ -32,6 +32,7 @@ from . import search
 from . import units
 from .data import validate_data
 from .fitting import Fit, Problem, fit_model, make_problem, set_rows
+from .gates import bic_gain, effective_n
 from .noise import correlation_time, noise_rms
 from .params import effect_form, effect_params, rig_entry
 
@@ -153,6 +154,8 @@ def reconcile(kind: str, data: dict, model: GearModel, catalog: Catalog,
     in_frames = frames.choose_frames(problem, start)
     with_rig, rig_table, singles = search.select_rig(problem, start, in_frames)
     best, candidates = search.select_gear(problem, with_rig, singles)
+    problem, with_rig, best, candidates = _gear_twin_instead(problem, with_rig, best,
+                                                             candidates)
     final = search.recheck_rig(problem, best.fit if best else with_rig)
     final = refine.refine(problem, _without_outliers(problem, final))
     keep = np.ones(len(base.y), bool)
@@ -180,6 +183,32 @@ def reconcile(kind: str, data: dict, model: GearModel, catalog: Catalog,
                    + readings.undecided(named, rivals, beside, sigma, base.unit)
                    + readings.series_slip(bool(best and best.series_slip))
                    + readings.progressive_spring(bool(best and best.progressive)))
+
+
+def _gear_twin_instead(problem: Problem, with_rig: Fit, best, candidates):
+    """The gear effects selected again without a measurement effect that a gear effect
+    reads nearly as (a torque channel's gain takes the extra twist of a series spring),
+    kept when they fit better: the measurement effect was preferred to each gear effect
+    alone, and two gear effects together may explain what it took. Returns (problem, rig
+    fit, best, candidates) of the reading kept."""
+    twins = [e for e in with_rig.effects if (problem.kind, e) in search.GEAR_TWIN]
+    if not twins:
+        return problem, with_rig, best, candidates
+    other = replace(problem, notes=list(problem.notes), scales=dict(problem.scales),
+                    te_sidebands=dict(problem.te_sidebands))
+    without = fit_model(other, tuple(e for e in with_rig.effects if e not in twins),
+                        with_rig.theta)
+    alt_best, alt_candidates = search.select_gear(other, without)
+    if alt_best is None:
+        return problem, with_rig, best, candidates
+    kept = best.fit if best else with_rig
+    n_eff = effective_n(problem, kept.residual(problem))
+    gain = bic_gain(kept, alt_best.fit, n_eff)
+    if gain <= 0:
+        return problem, with_rig, best, candidates
+    other.notes.append(f"{' and '.join(twins)} set aside: without it, "
+                       f"{' + '.join(alt_best.effects)} fit the data better (ΔBIC {gain:.1f})")
+    return other, without, alt_best, alt_candidates
 
 
 def _rmse_beside(problem: Problem, final: Fit, rivals: tuple[str, ...], keep
