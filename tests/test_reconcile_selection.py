@@ -160,6 +160,18 @@ def test_a_sharp_backlash_gets_no_stiffening_spring():
     assert "T_k" not in result["steps"][0]["params"]
 
 
+def test_a_spring_whose_knee_goes_to_its_floor_stays_a_backlash():
+    """Suite B's Dahl loop + tanh dead zone (seed 11, 1 per cell; the dead zone 86 % closed
+    at 3 % of T0): beside the loop the backlash's width went past 0.2·T0 and the pair was
+    read as a loop + stiffening spring, with the spring's knee at its floor 0.1·T0, as
+    steep as the spring may stiffen (1.19σ). A knee at its floor is a clearance's step:
+    the backlash stays, both are named, within 1.2σ, with no spring reading."""
+    case, result = case_run("b", "b-torsion-pair-hysteresis+backlash-dahl-000")
+    assert set(result["missing_effects"]) == {"hysteresis", "backlash"}
+    assert not _stiffening_reading(result)
+    assert result["rmse_after"] <= 1.2 * case.noise_rms
+
+
 def test_a_low_load_factor_is_not_named_for_the_viscosity_law_s_shape():
     """Suite E's Andrade–Palmgren temperature single (seed 11, 2 per cell): Reynolds'
     exponential names the temperature dependence and leaves the curvature of Andrade's law,

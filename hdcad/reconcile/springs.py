@@ -73,7 +73,7 @@ def slow_backlash(problem: Problem, start: Fit, best: Candidate, singles: dict[s
     spring = _knee_fit(problem, start.effects + named, best.fit.theta)
     g = gate(problem, start, spring, sigma, tau)
     other = [e for e in named if e != "housing_compliance"]
-    if (gate(problem, spring, best.fit, sigma, tau).delta_bic <= BIC_MIN and g.passes()
+    if (not _knee_at_floor(problem) and gate(problem, spring, best.fit, sigma, tau).delta_bic <= BIC_MIN and g.passes()
             and all(gate(problem, singles[e], spring, sigma, tau).passes(second=True)
                     for e in other)):
         return Candidate(named, spring, g, True, progressive=True)
@@ -101,6 +101,12 @@ def stiffening_second(problem: Problem, start: Fit, best: Candidate, sigma: floa
         return Candidate(named, pair, g, True)
     problem.housing_knee = math.inf
     return None
+
+
+def _knee_at_floor(problem: Problem) -> bool:
+    """The fitted knee at the lowest its bounds allow: the spring would stiffen as steeply
+    as it can, a clearance's step rather than a spring."""
+    return problem.housing_knee <= 1.05 * KNEE_BOUNDS[0] * problem.scales["T0"]
 
 
 def _knee_fit(problem: Problem, effects: tuple[str, ...], theta: dict[str, float]) -> Fit:
