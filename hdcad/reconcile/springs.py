@@ -57,8 +57,10 @@ def slow_backlash(problem: Problem, start: Fit, best: Candidate, singles: dict[s
     width > ``TAKEUP_MAX``·T0), read as a housing spring that stiffens
     (:func:`.effects.progressive_twist`, knee torque fitted) when the backlash does not fit
     clearly better (ΔBIC ≤ ``BIC_MIN``) and the spring passes the gates (over the other
-    member alone too, in a pair); else None. Beside a loop a narrow backlash is not weighed:
-    the loop's saturation bends the curve too, and the spring would take its shape.
+    member alone too, in a pair) with its knee above the floor of ``KNEE_BOUNDS`` (a knee
+    at the floor is a clearance's step); else None. Beside a loop a narrow backlash is not
+    weighed: the loop's saturation bends the curve too, and the spring would take its
+    shape.
 
     A lost motion not taken up by a few per cent of the rated torque is not what the
     catalog calls lost motion; the backlash is reported as the other reading.
@@ -73,7 +75,8 @@ def slow_backlash(problem: Problem, start: Fit, best: Candidate, singles: dict[s
     spring = _knee_fit(problem, start.effects + named, best.fit.theta)
     g = gate(problem, start, spring, sigma, tau)
     other = [e for e in named if e != "housing_compliance"]
-    if (not _knee_at_floor(problem) and gate(problem, spring, best.fit, sigma, tau).delta_bic <= BIC_MIN and g.passes()
+    if (not _knee_at_floor(problem) and g.passes()
+            and gate(problem, spring, best.fit, sigma, tau).delta_bic <= BIC_MIN
             and all(gate(problem, singles[e], spring, sigma, tau).passes(second=True)
                     for e in other)):
         return Candidate(named, spring, g, True, progressive=True)

@@ -153,9 +153,10 @@ def reconcile(kind: str, data: dict, model: GearModel, catalog: Catalog,
     start = _start(problem)
     in_frames = frames.choose_frames(problem, start)
     with_rig, rig_table, singles = search.select_rig(problem, start, in_frames)
+    unselected = _copy(problem)  # the selection sets the named forms on the problem
     best, candidates = search.select_gear(problem, with_rig, singles)
-    problem, with_rig, best, candidates = _gear_twin_instead(problem, with_rig, best,
-                                                             candidates)
+    problem, with_rig, best, candidates = _gear_twin_instead(
+        problem, unselected, with_rig, best, candidates)
     final = search.recheck_rig(problem, best.fit if best else with_rig)
     final = refine.refine(problem, _without_outliers(problem, final))
     keep = np.ones(len(base.y), bool)
@@ -185,20 +186,27 @@ def reconcile(kind: str, data: dict, model: GearModel, catalog: Catalog,
                    + readings.progressive_spring(bool(best and best.progressive)))
 
 
-def _gear_twin_instead(problem: Problem, with_rig: Fit, best, candidates):
-    """The gear effects selected again without a measurement effect that a gear effect
-    reads nearly as (a torque channel's gain takes the extra twist of a series spring),
-    kept when they fit better: the measurement effect was preferred to each gear effect
-    alone, and two gear effects together may explain what it took. Returns (problem, rig
-    fit, best, candidates) of the reading kept."""
+def _copy(problem: Problem) -> Problem:
+    """``problem`` with its own notes and settings (its data and caches shared)."""
+    return replace(problem, notes=list(problem.notes), scales=dict(problem.scales),
+                   te_sidebands=dict(problem.te_sidebands), te_frames=dict(problem.te_frames),
+                   te_second_frames=dict(problem.te_second_frames))
+
+
+def _gear_twin_instead(problem: Problem, unselected: Problem, with_rig: Fit, best,
+                       candidates):
+    """The gear effects selected again (on ``unselected``, the problem as it was before
+    the selection) without a measurement effect that a gear effect reads nearly as (a
+    torque channel's gain takes the extra twist of a series spring), kept when they fit
+    better: the measurement effect was preferred to each gear effect alone, and two gear
+    effects together may explain what it took. Returns (problem, rig fit, best,
+    candidates) of the reading kept."""
     twins = [e for e in with_rig.effects if (problem.kind, e) in search.GEAR_TWIN]
     if not twins:
         return problem, with_rig, best, candidates
-    other = replace(problem, notes=list(problem.notes), scales=dict(problem.scales),
-                    te_sidebands=dict(problem.te_sidebands))
-    without = fit_model(other, tuple(e for e in with_rig.effects if e not in twins),
+    without = fit_model(unselected, tuple(e for e in with_rig.effects if e not in twins),
                         with_rig.theta)
-    alt_best, alt_candidates = search.select_gear(other, without)
+    alt_best, alt_candidates = search.select_gear(unselected, without)
     if alt_best is None:
         return problem, with_rig, best, candidates
     kept = best.fit if best else with_rig
@@ -206,9 +214,9 @@ def _gear_twin_instead(problem: Problem, with_rig: Fit, best, candidates):
     gain = bic_gain(kept, alt_best.fit, n_eff)
     if gain <= 0:
         return problem, with_rig, best, candidates
-    other.notes.append(f"{' and '.join(twins)} set aside: without it, "
-                       f"{' + '.join(alt_best.effects)} fit the data better (ΔBIC {gain:.1f})")
-    return other, without, alt_best, alt_candidates
+    unselected.notes.append(f"{' and '.join(twins)} set aside: without it, "
+                            f"{' + '.join(alt_best.effects)} fit better (ΔBIC {gain:.1f})")
+    return unselected, without, alt_best, alt_candidates
 
 
 def _rmse_beside(problem: Problem, final: Fit, rivals: tuple[str, ...], keep
