@@ -210,3 +210,20 @@ def test_a_gain_that_took_a_series_spring_is_set_aside(name):
     assert not [m for m in result["measurement_effects"] if m["effect"] == "sensor_gain"]
     assert any(n.startswith("sensor_gain set aside") for n in result["notes"])
     assert result["rmse_after"] <= 1.2 * case.noise_rms
+
+
+def test_the_report_says_which_measurement_effect_was_added_and_which_set_aside():
+    """Each round of the measurement search adds its best passing effect: the report's
+    table marks it added when the final model keeps it, and set aside when a later step
+    dropped it (the rows were all 'passes, not best' before, the one added too)."""
+    from hdcad.reconcile.workflow import _candidate_rows
+    round_ = [{"effect": "sensor_gain", "delta_bic": 4082.8, "passes": True},
+              {"effect": "thermal_drift", "delta_bic": 216.5, "passes": True},
+              {"effect": "sensor_play", "delta_bic": -6.8, "passes": False}]
+    kept, dropped = (_candidate_rows([], [round_], [], rig)[0] for rig in
+                     ({"sensor_gain"}, set()))
+    assert [(r["accepted"], r["set_aside"]) for r in kept] == [(True, False), (False, False),
+                                                               (False, False)]
+    assert [(r["accepted"], r["set_aside"]) for r in dropped] == [(False, True),
+                                                                  (False, False),
+                                                                  (False, False)]

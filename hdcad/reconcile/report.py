@@ -127,6 +127,7 @@ def report_context(result: Reconciliation, figures: list[dict]) -> dict:
                 "cv_gain": f"{c['cv_gain']:.1%}",
                 "explained": f"{c['explained_var_over_noise']:.2f}",
                 "verdict": "added" if c["accepted"] else
+                "added, set aside later" if c.get("set_aside") else
                 ("passes, not best" if c["passes"] else "rejected")} for c in r]
               for r in result.candidates]
     regions = [{"where": r["where"], "before": fmt(r["rms_before"], unit),

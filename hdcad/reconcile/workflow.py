@@ -249,12 +249,22 @@ def _steps(problem, named, candidates, final, keep) -> list[Step]:
     return out
 
 
-def _candidate_rows(candidates, rig_table, named) -> list[list[dict]]:
+def _candidate_rows(candidates, rig_table, named, rig_kept) -> list[list[dict]]:
+    """The rounds of the search as the report lists them: each round's measurement effects
+    (the one added is the round's best passing one; ``set_aside`` when the final model
+    does not keep it, ``rig_kept`` its measurement effects), then the gear candidates."""
     gear = [{"effect": "+".join(c.effects), "delta_bic": c.gate.delta_bic,
              "cv_gain": c.gate.cv_gain, "explained_var_over_noise": c.gate.explained,
              "accepted": c.effects == tuple(named), "passes": c.passes, "reason": c.reason}
             for c in candidates]
-    return [[dict(r, accepted=False) for r in round_] for round_ in rig_table] + [gear]
+    rounds = []
+    for round_ in rig_table:
+        passing = [r for r in round_ if r["passes"]]
+        added = max(passing, key=lambda r: r["delta_bic"])["effect"] if passing else None
+        rounds.append([dict(r, accepted=r["effect"] == added and added in rig_kept,
+                            set_aside=r["effect"] == added and added not in rig_kept)
+                       for r in round_])
+    return rounds + [gear]
 
 
 def _result(problem, model, start, final, resid0, residual, sigma, tau, keep, steps,
@@ -284,7 +294,8 @@ def _result(problem, model, start, final, resid0, residual, sigma, tau, keep, st
         baseline_params={n: {"value": float(v), "unit": u} for n, v, u in
                          zip(base.free_names, final.beta, base.free_units)},
         regions=regions,
-        candidates=_candidate_rows(candidates, rig_table, [s.effect for s in steps]),
+        candidates=_candidate_rows(candidates, rig_table, [s.effect for s in steps],
+                                   {m["effect"] for m in measurement}),
         notes=problem.notes + [GATE_NOTE], measurement_effects=measurement,
         nuisances=nuisances, equivalent_readings=equivalent,
         outliers=int(problem.outliers.size),
