@@ -40,11 +40,11 @@ from __future__ import annotations
 
 import math
 
+from typing import TYPE_CHECKING
+
 import cadquery as cq
 import numpy as np
-import trimesh
 from OCP.BRepMesh import BRepMesh_IncrementalMesh
-from scipy.spatial import cKDTree
 
 from ..catalog import Catalog
 from ..checks.record import CheckResult, Quantity, compared, not_evaluated
@@ -52,6 +52,9 @@ from ..design_options import DesignOptions
 from ..models import GearModel
 from .component_housing import CASE_PARTS, HOUSING, OUTLINE
 from .part import Part
+
+if TYPE_CHECKING:  # trimesh (0.7 s to import) is loaded by the functions that mesh
+    import trimesh
 
 ID, FAMILY = "inner_wall_clearance", "geometry"
 TITLE = "Inner wall clearance (gear envelope to case)"
@@ -82,6 +85,8 @@ def gear_envelopes(outline: dict, w0_mm: float) -> dict[str, cq.Shape]:
 # -- meshes and distances -----------------------------------------------------------------------
 def mesh_of(shapes: list[cq.Shape], tolerance_mm: float) -> trimesh.Trimesh:
     """One triangle mesh of ``shapes`` (OCCT tessellation, linear deflection tolerance_mm)."""
+    import trimesh
+
     parts = []
     for shape in shapes:
         # absolute deflection (cadquery's own tessellate meshes with a relative one)
@@ -92,12 +97,17 @@ def mesh_of(shapes: list[cq.Shape], tolerance_mm: float) -> trimesh.Trimesh:
 
 
 def _query_points(mesh: trimesh.Trimesh, seed: int) -> np.ndarray:
+    import trimesh
+
     samples, _ = trimesh.sample.sample_surface(mesh, SAMPLES_PER_MESH, seed=seed)
     return np.vstack([mesh.vertices, samples])
 
 
 def points_to_mesh_mm(points: np.ndarray, mesh: trimesh.Trimesh) -> float:
     """Smallest exact distance [mm] from ``points`` to the triangles of ``mesh``."""
+    import trimesh
+    from scipy.spatial import cKDTree
+
     triangles = mesh.triangles
     low, high = triangles.min(axis=1), triangles.max(axis=1)
     bound, _ = cKDTree(mesh.vertices).query(points)  # nearest vertex: an upper bound
