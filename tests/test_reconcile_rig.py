@@ -227,3 +227,28 @@ def test_the_report_says_which_measurement_effect_was_added_and_which_set_aside(
     assert [(r["accepted"], r["set_aside"]) for r in dropped] == [(False, True),
                                                                   (False, False),
                                                                   (False, False)]
+
+
+def test_an_output_angle_gain_is_reported_as_the_sensor_s():
+    """Suite C's output-angle gain decoy (seed 11, 1 per cell; written from the contract
+    only): the output reads 240 ppm high. The baseline fits the output's slope with the
+    offset (the ratio is exact), so the gain was taken silently and nothing was reported.
+    Now it is the rig's sensor_gain, its size within 2 % of the truth's, and no gear
+    effect."""
+    case, result = case_run("c", "c-transmission-decoyseparable-sensorgain-outputgain-000")
+    assert result["missing_effects"] == []
+    (gain,) = [m for m in result["measurement_effects"] if m["effect"] == "sensor_gain"]
+    truth = case.info["params"]["output_gain"] - 1
+    assert gain["params"]["g"]["value"] == pytest.approx(truth, rel=0.02)
+    assert gain["reading"].startswith("the output angle reads 241 ppm high")
+
+
+def test_no_output_gain_on_clean_transmission_data():
+    """Every suite's clean transmission cases in the shared sample (seed 11, 1 per cell):
+    the output's slope is fitted in each, and none is reported as a sensor's gain."""
+    from truth_runs import SUITES, suite_runs
+    clean = [(c.name, r) for path in SUITES for c, r in zip(*suite_runs(path))
+             if c.kind == "transmission" and c.category == "clean"]
+    assert len(clean) >= 20
+    assert [n for n, r in clean
+            if any(m["effect"] == "sensor_gain" for m in r["measurement_effects"])] == []

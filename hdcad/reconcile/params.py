@@ -11,6 +11,7 @@ from . import effects as fx
 from . import plays
 from .effects import key_of
 from .fitting import Fit, Problem
+from .gates import BIC_MIN, EXPLAINED_MIN
 from .model_columns import drift_labels, parameters_of
 from .harmonics import TE_LABELS, frames_of, legendre, te_order_of
 from .rig import RIG_EFFECTS, TORQUE_GAIN_KEY
@@ -202,3 +203,60 @@ def effect_params(problem: Problem, fit: Fit, effect: str) -> dict[str, dict]:
 
 
 __all__ = ["effect_form", "effect_params", "rig_entry", "rig_params", "TE_LABELS"]
+
+
+# A steady-speed test: the WG angle and the record's time this closely in line make a drift
+# of the output angle with time read as a gain of its sensor.
+STEADY_SPEED_CORRELATION = 0.99
+
+
+def output_gain_entry(problem: Problem, fit: Fit, sigma: float, tau: float) -> list[dict]:
+    """Transmission: the output angle sensor's gain as a measurement effect (``sensor_gain``),
+    where it is significant. The ratio is exact (tooth counts), so the baseline fits the
+    output's slope error (``scale_error``) with the offset; it is reported when leaving it
+    out raises the BIC by more than ``BIC_MIN`` (effective sample size N/τ, τ [rows]) and
+    the residual by more than ``EXPLAINED_MIN`` noise variances (σ [rad]), and not beside
+    a named eccentricity of the output encoder (over an arc of the output the two trade).
+    The reading says when an eccentric output encoder or, at a steady speed, a drift with
+    time reads the same. Empty otherwise."""
+    label = ("baseline", "scale_error")
+    if (problem.kind != "transmission" or label not in fit.labels or fit.columns is None
+            or "encoder_eccentricity" in fit.effects):  # over an arc the two trade
+        return []
+    i = fit.labels.index(label)
+    if not _significant(problem, fit.columns, i, sigma, tau):
+        return []
+    inputs = problem.base.inputs
+    out = inputs["output_angle_rad"][problem.rows]  # the output's turn [rad]
+    eccentric = np.column_stack([fit.columns, np.sin(out), np.cos(out)])
+    alike = not _significant(problem, eccentric, i, sigma, tau)
+    g = float(fit.beta[i])
+    steady = abs(np.corrcoef(inputs["wg_angle_rad"], inputs["record_position"])[0, 1])
+    text = (f"the output angle reads {abs(g) * 1e6:.0f} ppm {'high' if g > 0 else 'low'} "
+            f"(g = {g:.3g}; the ratio is exact, so a slope error of the output is its "
+            "sensor's: a scale constant, line count or roller diameter)")
+    if alike:
+        text += (f"; over the {math.degrees(float(np.ptp(out))):.0f}° of output this test "
+                 "turns, an output encoder mounted off-centre (once per output revolution) "
+                 "reads about the same")
+    if steady > STEADY_SPEED_CORRELATION:
+        text += ("; at this test's steady speed a drift of the output angle with test time "
+                 "reads the same")
+    return [{"effect": "sensor_gain", "params": {"g": {"value": g, "unit": "-"}},
+             "reading": text}]
+
+
+def _significant(problem: Problem, columns: np.ndarray, i: int, sigma: float, tau: float
+                 ) -> bool:
+    """Whether column ``i`` of the design ``columns`` earns its place: leaving it out raises
+    the BIC by more than ``BIC_MIN`` and the residual by ``EXPLAINED_MIN`` noise
+    variances."""
+    def rss(a: np.ndarray) -> float:
+        return float(np.sum((problem.y - a @ np.linalg.lstsq(a, problem.y, rcond=None)[0]) ** 2))
+
+    n = len(problem.rows)
+    n_eff = max(n / tau, 2.0)
+    full, without = rss(columns), rss(np.delete(columns, i, axis=1))
+    delta_bic = n_eff * math.log(without / max(full, 1e-300)) - math.log(n_eff)
+    explained = (without - full) / n / sigma ** 2 if sigma > 0 else math.inf
+    return delta_bic > BIC_MIN and explained > EXPLAINED_MIN

@@ -34,7 +34,7 @@ from .data import validate_data
 from .fitting import Fit, Problem, fit_model, make_problem, set_rows
 from .gates import bic_gain, effective_n
 from .noise import correlation_time, noise_rms
-from .params import effect_form, effect_params, rig_entry
+from .params import effect_form, effect_params, output_gain_entry, rig_entry
 
 GATE_NOTE = search.GATE_NOTE
 # A sample further than this many noise RMS from the median of its neighbours is a gross
@@ -177,6 +177,8 @@ def reconcile(kind: str, data: dict, model: GearModel, catalog: Catalog,
     measurement = [f.as_dict() for f in fixes] + [
         rig_entry(problem, final, e)
         for e in final.effects if e in search.rig.RIG_EFFECTS]
+    if "sensor_gain" not in final.effects:
+        measurement += output_gain_entry(problem, final, sigma, tau)
     nuisances = readings.nuisances(problem, final)
     return _result(problem, model, start, final, resid0, residual, sigma, tau, keep, steps,
                    candidates, rig_table, measurement, nuisances,
