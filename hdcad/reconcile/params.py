@@ -202,8 +202,6 @@ def effect_params(problem: Problem, fit: Fit, effect: str) -> dict[str, dict]:
     return {k: {"value": float(v), "unit": u} for k, (v, u) in out.items()}
 
 
-__all__ = ["effect_form", "effect_params", "rig_entry", "rig_params", "TE_LABELS"]
-
 
 # A steady-speed test: the WG angle and the record's time this closely in line make a drift
 # of the output angle with time read as a gain of its sensor.
@@ -252,7 +250,8 @@ def _significant(problem: Problem, columns: np.ndarray, i: int, sigma: float, ta
     the BIC by more than ``BIC_MIN`` and the residual by ``EXPLAINED_MIN`` noise
     variances."""
     def rss(a: np.ndarray) -> float:
-        return float(np.sum((problem.y - a @ np.linalg.lstsq(a, problem.y, rcond=None)[0]) ** 2))
+        beta = np.linalg.lstsq(a, problem.y, rcond=None)[0]
+        return float(np.sum((problem.y - a @ beta) ** 2))
 
     n = len(problem.rows)
     n_eff = max(n / tau, 2.0)
@@ -260,3 +259,7 @@ def _significant(problem: Problem, columns: np.ndarray, i: int, sigma: float, ta
     delta_bic = n_eff * math.log(without / max(full, 1e-300)) - math.log(n_eff)
     explained = (without - full) / n / sigma ** 2 if sigma > 0 else math.inf
     return delta_bic > BIC_MIN and explained > EXPLAINED_MIN
+
+
+__all__ = ["effect_form", "effect_params", "output_gain_entry", "rig_entry", "rig_params",
+           "TE_LABELS"]

@@ -116,8 +116,16 @@ RIG_EFFECTS: dict[str, Effect] = {e.name: e for e in (
 RIG_NAMES = tuple(RIG_EFFECTS)
 
 
+# Measurement effects that the baseline already fits in a kind, so not searched there: a
+# transmission test's output-angle gain is the baseline's slope (the ratio is exact), and
+# is reported from it (params.output_gain_entry).
+IN_BASELINE = {("sensor_gain", "transmission")}
+
+
 def applicable(kind: str) -> tuple[str, ...]:
-    return tuple(n for n, e in RIG_EFFECTS.items() if kind in e.kinds)
+    """The measurement effects searched for in ``kind``."""
+    return tuple(n for n, e in RIG_EFFECTS.items()
+                 if kind in e.kinds and (n, kind) not in IN_BASELINE)
 
 
 # What a measurement effect fits in a kind, where that differs by kind: a sensor's gain is
