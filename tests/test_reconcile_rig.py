@@ -213,13 +213,18 @@ def test_a_gain_that_took_a_series_spring_is_set_aside(name):
 
 
 def test_the_report_says_which_measurement_effect_was_added_and_which_set_aside():
-    """Each round of the measurement search adds its best passing effect: the report's
-    table marks it added when the final model keeps it, and set aside when a later step
-    dropped it (the rows were all 'passes, not best' before, the one added too)."""
+    """Each round of the measurement search adds its best passing effect and records it
+    (``added``): the report's table marks it added when the final model keeps it, and set
+    aside when a later step dropped it (the rows were all 'passes, not best' before, the
+    one added too). C's softplus + linear pair (seed 11, 1 per cell) adds the torque gain in
+    its first round and sets it aside."""
+    from hdcad.catalog import load_catalog
+    from hdcad.models import resolve_gear
+    from hdcad.reconcile import reconcile, validate_data
     from hdcad.reconcile.workflow import _candidate_rows
-    round_ = [{"effect": "sensor_gain", "delta_bic": 4082.8, "passes": True},
-              {"effect": "thermal_drift", "delta_bic": 216.5, "passes": True},
-              {"effect": "sensor_play", "delta_bic": -6.8, "passes": False}]
+    round_ = [{"effect": "sensor_gain", "delta_bic": 4082.8, "passes": True, "added": True},
+              {"effect": "thermal_drift", "delta_bic": 216.5, "passes": True, "added": False},
+              {"effect": "sensor_play", "delta_bic": -6.8, "passes": False, "added": False}]
     kept, dropped = (_candidate_rows([], [round_], [], rig)[0] for rig in
                      ({"sensor_gain"}, set()))
     assert [(r["accepted"], r["set_aside"]) for r in kept] == [(True, False), (False, False),
@@ -227,6 +232,13 @@ def test_the_report_says_which_measurement_effect_was_added_and_which_set_aside(
     assert [(r["accepted"], r["set_aside"]) for r in dropped] == [(False, True),
                                                                   (False, False),
                                                                   (False, False)]
+    case = named_case("c", "c-torsion-pair-backlashhousingcompliance-softpluslinear-000", 11,
+                      per_cell=1)
+    catalog = load_catalog()
+    first = reconcile(case.kind, validate_data(case.kind, case.columns),
+                      resolve_gear(case.model, catalog)[0], catalog).candidates[0]
+    assert [r["effect"] for r in first if r["set_aside"]] == ["sensor_gain"]
+    assert not any(r["accepted"] for r in first)
 
 
 def test_an_output_angle_gain_is_reported_as_the_sensor_s():

@@ -39,7 +39,6 @@ Harmonic Drive strain wave gearing: Z_F = Z_C − 2, R = Z_F/2 for the cup type 
 from __future__ import annotations
 
 import math
-
 from typing import TYPE_CHECKING
 
 import cadquery as cq

@@ -73,8 +73,14 @@ def gate(problem: Problem, reference: Fit, fit: Fit, sigma: float, tau: float) -
 def bic_gain(reference: Fit, fit: Fit, n_eff: float) -> float:
     """ΔBIC [-] of ``fit`` over ``reference`` at the effective sample size ``n_eff``:
     n_eff·ln(RSS_ref/RSS) − Δk·ln(n_eff) (positive: ``fit`` is preferred)."""
-    return (n_eff * math.log(reference.rss / max(fit.rss, 1e-300))
-            - (fit.n_params - reference.n_params) * math.log(n_eff))
+    return rss_bic_gain(reference.rss, fit.rss, fit.n_params - reference.n_params, n_eff)
+
+
+def rss_bic_gain(rss_reference: float, rss: float, extra_params: int, n_eff: float) -> float:
+    """ΔBIC [-] of a fit of residual sum of squares ``rss`` with ``extra_params`` more
+    parameters over one of ``rss_reference`` (:func:`bic_gain`)."""
+    return (n_eff * math.log(rss_reference / max(rss, 1e-300))
+            - extra_params * math.log(n_eff))
 
 
 def round_noise(problem: Problem, fits: list[Fit]) -> tuple[float, float]:

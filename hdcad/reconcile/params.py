@@ -11,7 +11,7 @@ from . import effects as fx
 from . import plays
 from .effects import key_of
 from .fitting import Fit, Problem
-from .gates import BIC_MIN, EXPLAINED_MIN
+from .gates import BIC_MIN, EXPLAINED_MIN, rss_bic_gain
 from .model_columns import drift_labels, parameters_of
 from .harmonics import TE_LABELS, frames_of, legendre, te_order_of
 from .rig import RIG_EFFECTS, TORQUE_GAIN_KEY
@@ -202,7 +202,6 @@ def effect_params(problem: Problem, fit: Fit, effect: str) -> dict[str, dict]:
     return {k: {"value": float(v), "unit": u} for k, (v, u) in out.items()}
 
 
-
 # A steady-speed test: the WG angle and the record's time this closely in line make a drift
 # of the output angle with time read as a gain of its sensor.
 STEADY_SPEED_CORRELATION = 0.99
@@ -256,7 +255,7 @@ def _significant(problem: Problem, columns: np.ndarray, i: int, sigma: float, ta
     n = len(problem.rows)
     n_eff = max(n / tau, 2.0)
     full, without = rss(columns), rss(np.delete(columns, i, axis=1))
-    delta_bic = n_eff * math.log(without / max(full, 1e-300)) - math.log(n_eff)
+    delta_bic = rss_bic_gain(without, full, 1, n_eff)
     explained = (without - full) / n / sigma ** 2 if sigma > 0 else math.inf
     return delta_bic > BIC_MIN and explained > EXPLAINED_MIN
 

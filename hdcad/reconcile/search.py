@@ -100,6 +100,8 @@ def select_rig(problem: Problem, start: Fit, known: dict[str, Fit] | None = None
         if not passing:
             break
         best = max(passing, key=lambda n: gates[n].delta_bic)
+        for row in table[-1]:
+            row["added"] = row["effect"] == best
         current, singles, known = fits[best], None, {}
         names.remove(best)
     return current, table, singles

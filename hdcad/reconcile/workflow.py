@@ -253,19 +253,15 @@ def _steps(problem, named, candidates, final, keep) -> list[Step]:
 
 def _candidate_rows(candidates, rig_table, named, rig_kept) -> list[list[dict]]:
     """The rounds of the search as the report lists them: each round's measurement effects
-    (the one added is the round's best passing one; ``set_aside`` when the final model
-    does not keep it, ``rig_kept`` its measurement effects), then the gear candidates."""
+    (the one the round added is ``set_aside`` when the final model does not keep it,
+    ``rig_kept`` its measurement effects), then the gear candidates."""
     gear = [{"effect": "+".join(c.effects), "delta_bic": c.gate.delta_bic,
              "cv_gain": c.gate.cv_gain, "explained_var_over_noise": c.gate.explained,
              "accepted": c.effects == tuple(named), "passes": c.passes, "reason": c.reason}
             for c in candidates]
-    rounds = []
-    for round_ in rig_table:
-        passing = [r for r in round_ if r["passes"]]
-        added = max(passing, key=lambda r: r["delta_bic"])["effect"] if passing else None
-        rounds.append([dict(r, accepted=r["effect"] == added and added in rig_kept,
-                            set_aside=r["effect"] == added and added not in rig_kept)
-                       for r in round_])
+    rounds = [[dict(r, accepted=r.get("added", False) and r["effect"] in rig_kept,
+                    set_aside=r.get("added", False) and r["effect"] not in rig_kept)
+               for r in round_] for round_ in rig_table]
     return rounds + [gear]
 
 
