@@ -87,6 +87,11 @@ class Problem:
     # hysteresis as a sum of friction elements with fixed slip torques, weighted freely
     # (plays: an Iwan model) instead of the Bouc–Wen loop; tried last (loops.refine_plays)
     hysteresis_plays: bool = False
+    # hysteresis as creep elements (creep: standard linear solids over a spectrum of
+    # relaxation times): "alone" in place of the friction loop, "beside" it, or None; their
+    # centre lines taken out (creep_centred) or not; tried last (loops.refine_creep)
+    hysteresis_creep: str | None = None
+    creep_centred: bool = False
     # constant C [°C] of the viscosity–temperature law (efficiency_laws.VISCOSITY_LAWS_C):
     # Reynolds' while effects are named, the law that fits best once they are
     # (refine.refine_viscosity)

@@ -19,11 +19,11 @@ import numpy as np
 from scipy.optimize import least_squares
 
 from . import effects as fx
-from . import plays
+from . import creep, plays
 from .bounded import solve
 from .fitting import POLISH_TOL, Fit, Problem, best_setting, finish
 from .model_columns import columns, nonlinear
-from .gates import BIC_MIN, Candidate, bic_best, effective_n, gate
+from .gates import BIC_MIN, EXPLAINED_MIN, Candidate, beyond, bic_best, effective_n, gate
 
 THROUGH_GEAR = ("hysteresis: a friction torque in parallel with the gear's spring (its twist "
                 "the torque × the catalog curve's local compliance)")
@@ -151,8 +151,10 @@ def _replace_loop_notes(problem: Problem, text: str, form: tuple, fit: Fit, best
                         than: str) -> None:
     """Note the loop's new form ``text`` in ``form`` and how much closer ``best`` fits than
     ``fit``; the earlier form's notes describe a loop no longer in the model."""
-    problem.notes[:] = [n for n in problem.notes if not n.startswith(
-        (f"{CENTRED} fits", f"{THROUGH_GEAR} fits", PREISACH.split("(")[0]))]
+    earlier = (f"{CENTRED} fits", f"{THROUGH_GEAR} fits", PREISACH.split("(")[0],
+               PLAYS.split("{")[0])
+    problem.notes[:] = [n for n in problem.notes if not n.startswith(earlier)
+                        and SERIES_PLAYS.split("}")[1].split("(")[0] not in n]
     problem.notes.append(text + (", about the catalog curve" if form[0] else "")
                          + (", through the gear's compliance" if form[1] else "")
                          + f", fits {math.sqrt(fit.rss / best.rss):.2f}× closer than "
@@ -206,6 +208,53 @@ def refine_plays(problem: Problem, fit: Fit) -> Fit:
     _replace_loop_notes(problem, _plays_text(problem),
                         (problem.hysteresis_centred, problem.hysteresis_through_gear), fit,
                         best, "the parametric loop")
+    return best
+
+
+CREEP = ("hysteresis: creep elements {where}(standard linear solids; relaxation times "
+         "{lo:.3g} … {hi:.3g} rows, delayed compliances fitted): a loop that widens with the "
+         "loading rate, as a grease film's or an elastomer's does")
+CREEP_READING = ("creep: at the rates of this test the creep elements may also stand for a "
+                 "friction loop's shape; loops measured at another loading rate tell a "
+                 "viscous loss from friction. The torsion record has no time column: its rows "
+                 "are taken as equally spaced in time, relaxation times given in rows")
+_CREEP_FORMS = tuple(itertools.product(("alone", "beside"), (False, True)))
+
+
+def refine_creep(problem: Problem, fit: Fit) -> Fit:
+    """A named hysteresis as creep elements with fixed relaxation times, weighted freely
+    (:mod:`.creep`), in place of the loop found so far or beside it, about the catalog
+    curve or not, kept when it lowers the BIC by more than ``BIC_MIN`` and explains
+    ``EXPLAINED_MIN`` noise variances more (:func:`.gates.beyond`): a loop whose width
+    follows the loading rate, which no friction loop does. Leaves
+    ``problem.hysteresis_creep`` set when it is kept."""
+    if (problem.kind != "torsion" or "hysteresis" not in fit.effects
+            or problem.base.curve is None or problem.hysteresis_creep):
+        return fit
+    in_use = fit.n_params - int(np.count_nonzero(fit.beta))
+    loop = (0 if problem.hysteresis_plays else 3 if problem.hysteresis_preisach is not None
+            else len(fx.nonlinear_parameters("hysteresis", problem.kind)))
+    trials = []
+    for where, centred in _CREEP_FORMS:
+        problem.hysteresis_creep, problem.creep_centred = where, centred
+        shapes = in_use - loop if where == "alone" else in_use
+        trials.append((finish(problem, fit.effects, fit.theta, shapes), where, centred))
+    best, where, centred = min(trials, key=lambda t: t[0].rss)
+    if not beyond(problem, fit, best, explained_min=EXPLAINED_MIN):
+        problem.hysteresis_creep, problem.creep_centred = None, False
+        return fit
+    problem.hysteresis_creep, problem.creep_centred = where, centred
+    weights = np.array([w for (e, n), w in zip(best.labels, best.beta)
+                        if e == "hysteresis" and n.startswith("creep_")])
+    taus = creep.relaxation_times(len(problem.base.y))[weights > 0] if weights.any() else [0.0]
+    text = CREEP.format(where="" if where == "alone" else "beside the friction loop ",
+                        lo=taus.min(), hi=taus.max())
+    if where == "alone":
+        _replace_loop_notes(problem, text, (centred, False), fit, best, "the friction loop")
+    else:
+        problem.notes.append(text + (", about the catalog curve" if centred else "")
+                             + f", fits {math.sqrt(fit.rss / best.rss):.2f}× closer (BIC)")
+    problem.notes.append(CREEP_READING)
     return best
 
 

@@ -18,7 +18,7 @@ import numpy as np
 from . import baseline as baselines
 from . import efficiency_laws as laws
 from . import effects as fx
-from . import plays, rig
+from . import creep, plays, rig
 from .effects import key_of
 from .harmonics import (harmonic, legendre, overtones_of, sideband_labels, sidebands,
                         te_column_labels, te_order_of)
@@ -83,23 +83,12 @@ def columns(problem: Problem, effects: tuple[str, ...], theta: dict[str, float],
         if name in rig.RIG_EFFECTS:
             names, block = rig.columns(name, problem.kind, inp, problem.step_position, th)
             add(name, names, block)
-        elif name == "hysteresis" and problem.hysteresis_plays:
-            S = _stop_states(problem, inp["torque_Nm"], branches, rows)
-            first = 0
-            if problem.hysteresis_series:  # each element's slip adds to the gear's twist
-                first = plays.series_first()
-                r = plays.thresholds(problem.scales["T0"])[first:]
-                S = S[:, first:] - inp["torque_Nm"][:, None] / r
-            elif problem.hysteresis_through_gear:
-                S = S * _through_gear(problem, inp["torque_Nm"], theta)[:, None]
-            add(name, [f"a_{k}" for k in range(first, first + S.shape[1])], -S, 0.0)
         elif name == "hysteresis":
-            z = _hysteresis_state(problem, inp["torque_Nm"], th, branches, rows)
-            if problem.hysteresis_series:
-                z = z - inp["torque_Nm"] / th["T_s"]
-            elif problem.hysteresis_through_gear:
-                z = z * _through_gear(problem, inp["torque_Nm"], theta)
-            add(name, ["z_sat"], -z, 0.0)
+            if problem.hysteresis_creep != "alone":
+                add(name, *_loop_columns(problem, inp, th, theta, branches, rows), 0.0)
+            if problem.hysteresis_creep:
+                C = _creep_states(problem, rows)
+                add(name, [f"creep_{k}" for k in range(C.shape[1])], C, 0.0)
         elif name == "backlash":
             torque = inp["torque_Nm"] - problem.play_bias * problem.scales["T0"]
             if problem.play_hold:
@@ -139,6 +128,43 @@ def columns(problem: Problem, effects: tuple[str, ...], theta: dict[str, float],
     if factor is not None:  # η = η0·Ke(α)·F(t): the effects scale the whole efficiency
         X = X * factor[:, None]
     return X, labels, np.array(lower), np.array(upper)
+
+
+def _loop_columns(problem: Problem, inp: dict, th: dict, theta: dict, branches, rows
+                  ) -> tuple[list[str], np.ndarray]:
+    """Labels and columns of the friction loop: a sum of friction elements (in parallel with
+    the gear or in series with it) or one Bouc–Wen or Preisach loop."""
+    torque = inp["torque_Nm"]
+    if problem.hysteresis_plays:
+        S = _stop_states(problem, torque, branches, rows)
+        first = 0
+        if problem.hysteresis_series:  # each element's slip adds to the gear's twist
+            first = plays.series_first()
+            r = plays.thresholds(problem.scales["T0"])[first:]
+            S = S[:, first:] - torque[:, None] / r
+        elif problem.hysteresis_through_gear:
+            S = S * _through_gear(problem, torque, theta)[:, None]
+        return [f"a_{k}" for k in range(first, first + S.shape[1])], -S
+    z = _hysteresis_state(problem, torque, th, branches, rows)
+    if problem.hysteresis_series:
+        z = z - torque / th["T_s"]
+    elif problem.hysteresis_through_gear:
+        z = z * _through_gear(problem, torque, theta)
+    return ["z_sat"], -z
+
+
+def _creep_states(problem: Problem, rows) -> np.ndarray:
+    """The creep elements' columns (:func:`.creep.creep_states`) on ``rows``: the lag runs
+    along the whole record (the rows left out of a fit are still loaded); less their centre
+    lines when the loop is drawn about the catalog curve."""
+    key = ("creep", problem.creep_centred)
+    if key not in problem.cache:
+        torque, t0 = problem.base.inputs["torque_Nm"], problem.scales["T0"]
+        C = creep.creep_states(torque, creep.relaxation_times(len(torque)), t0)
+        if problem.creep_centred:
+            C = C - creep.centre_lines(C, torque, t0)
+        problem.cache[key] = C
+    return problem.cache[key][rows]
 
 
 def _inputs_on(problem: Problem, full: bool) -> dict[str, np.ndarray]:

@@ -8,7 +8,7 @@ import numpy as np
 
 from . import efficiency_laws as laws
 from . import effects as fx
-from . import plays
+from . import creep, plays
 from .effects import key_of
 from .fitting import Fit, Problem
 from .gates import BIC_MIN, EXPLAINED_MIN, rss_bic_gain
@@ -136,14 +136,41 @@ def _plays(problem: Problem, b: dict[str, float]) -> dict[str, tuple[float, str]
     return out
 
 
+CREEP_FORM = ("θ = θ_catalog(T) + Σ c_k·(T_τk − T), c_k ≥ 0  (creep elements: standard "
+              "linear solids, T_τk the torque through a first-order lag of relaxation time "
+              "τ_k; Zener 1948)")
+
+
+def _creep(problem: Problem, b: dict[str, float]) -> dict[str, tuple[float, str]]:
+    """Creep elements: each one in use (relaxation time, delayed compliance) and the loop's
+    width at zero torque they make over the record."""
+    torque, t0 = problem.base.inputs["torque_Nm"], problem.scales["T0"]
+    tau = creep.relaxation_times(len(torque))
+    w = np.array([b.get(f"creep_{k}", 0.0) for k in range(len(tau))])
+    out = {"creep_loss_at_zero_torque": (creep.loss_at_zero(w, tau, torque, t0), "rad")}
+    for k in np.flatnonzero(w):
+        out[f"relaxation_rows_{k}"] = (float(tau[k]), "rows")
+        out[f"delayed_compliance_{k}"] = (float(w[k] / t0), "rad/(N·m)")
+    return out
+
+
 def effect_form(problem: Problem, effect: str) -> str:
     """The formula of the effect as the final model has it (the catalog of effects gives
     the form it is named with)."""
-    if effect == "hysteresis" and problem.hysteresis_plays:
+    if effect == "hysteresis" and problem.hysteresis_creep == "alone":
+        return CREEP_FORM
+    if effect == "hysteresis" and problem.hysteresis_creep:
+        return f"{_loop_form(problem)}; beside it {CREEP_FORM}"
+    return _loop_form(problem) if effect == "hysteresis" else fx.EFFECTS[effect].form
+
+
+def _loop_form(problem: Problem) -> str:
+    """The formula of the friction loop as the final model has it."""
+    if problem.hysteresis_plays:
         return SERIES_PLAYS_FORM if problem.hysteresis_series else PLAYS_FORM
-    if effect == "hysteresis" and problem.hysteresis_preisach is not None:
+    if problem.hysteresis_preisach is not None:
         return PREISACH_FORM
-    return fx.EFFECTS[effect].form
+    return fx.EFFECTS["hysteresis"].form
 
 
 def effect_params(problem: Problem, fit: Fit, effect: str) -> dict[str, dict]:
@@ -152,7 +179,9 @@ def effect_params(problem: Problem, fit: Fit, effect: str) -> dict[str, dict]:
     th = {p.name: fit.theta[key_of(effect, p.name)]
           for p in parameters_of(effect, problem.kind)}
     out: dict[str, tuple[float, str]] = {}
-    if effect == "hysteresis" and problem.hysteresis_plays:
+    if effect == "hysteresis" and problem.hysteresis_creep == "alone":
+        out = {"T0": (problem.scales["T0"], "N·m")}
+    elif effect == "hysteresis" and problem.hysteresis_plays:
         out = _plays(problem, b)
     elif effect == "hysteresis" and problem.hysteresis_preisach is not None:
         w, spread, c = problem.hysteresis_preisach
@@ -199,6 +228,8 @@ def effect_params(problem: Problem, fit: Fit, effect: str) -> dict[str, dict]:
         out = {"a": (th["a"], "-"), "b": (th["b"], "1/K"), "s": (th["s"], "-"),
                "boundary": (th["boundary"], "-"),
                "t_ref": (laws.REFERENCE_TEMPERATURE_C, "°C")}
+    if effect == "hysteresis" and problem.hysteresis_creep:
+        out.update(_creep(problem, b))
     return {k: {"value": float(v), "unit": u} for k, (v, u) in out.items()}
 
 

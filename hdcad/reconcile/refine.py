@@ -24,7 +24,7 @@ from .fitting import Fit, Problem, best_setting, finish, fit_model
 from .frames import refine_frames
 from .gates import EXPLAINED_MIN, beyond, bic_best, effective_n
 from .joint_fit import refine_spring
-from .loops import refine_hysteresis, refine_plays, refine_preisach
+from .loops import refine_creep, refine_hysteresis, refine_plays, refine_preisach
 from .params import play_along_record
 from .readings import free_scale
 from .rig import step_position
@@ -67,7 +67,7 @@ def refine(problem: Problem, fit: Fit) -> Fit:
     fit = refine_hysteresis(problem, refine_viscosity(problem, refine_low_load(
         problem, refine_te_order(problem, fit))))
     fit = refine_play_drift(problem, refine_play(problem, fit))
-    fit = refine_plays(problem, refine_preisach(problem, fit))
+    fit = refine_creep(problem, refine_plays(problem, refine_preisach(problem, fit)))
     return refine_stiffness(problem, fit)
 
 
