@@ -134,3 +134,33 @@ def temperature_factor(temperature_C: np.ndarray, share: float, slope_per_K: flo
     if speed_loss:  # the viscous loss at t_ref also grows with speed
         loss = loss + speed_loss * (speed - 1.0)
     return 1.0 / (1.0 + loss)
+
+
+# the effects a Stribeck law in Hersey's number takes the place of, together or alone
+HERSEY_EFFECTS = ("low_load_efficiency", "temperature_dependence")
+# Hersey number's load term: α is clipped here so that a no-load row keeps a finite number
+HERSEY_ALPHA_MIN = 0.01
+
+
+def hersey_number(speed_rpm: np.ndarray, alpha: np.ndarray, viscosity: np.ndarray | float,
+                  load_exponent: float) -> np.ndarray:
+    """H = g·(n/n_ref)/α^r [-]: Hersey's number ν·N/P relative to its value at 20 °C,
+    ``KE_REFERENCE_SPEED_RPM`` and rated torque; g = ν(t)/ν(20 °C) (``viscosity``), the
+    contact pressure P ∝ α^r (r = 1 a fixed contact area, 1/2 a Hertzian line contact)."""
+    a = np.maximum(np.asarray(alpha, dtype=float), HERSEY_ALPHA_MIN)
+    n = np.asarray(speed_rpm, dtype=float) / KE_REFERENCE_SPEED_RPM
+    return np.asarray(viscosity, dtype=float) * n / a ** load_exponent
+
+
+def stribeck_terms(hersey: np.ndarray, boundary_scale: float) -> np.ndarray:
+    """(n × 2) [-]: the loss terms of a Stribeck curve in Hersey's number H, boundary
+    friction exp(−H/H_b) that fades as the film builds and film shear √H that grows with
+    it; the loss is d_b·exp(−H/H_b) + d_f·√H, d ≥ 0, lowest between the two regimes.
+
+    References: Stribeck, R. (1902) "Die wesentlichen Eigenschaften der Gleit- und
+    Rollenlager", Z. VDI 46; Hersey, M. D. (1914) J. Wash. Acad. Sci. 4, 542–552;
+    Gelinck, E. R. M.; Schipper, D. J. (2000) "Calculation of Stribeck curves for line
+    contacts", Tribol. Int. 33, 175–181 (film friction ∝ √H in the EHL regime).
+    """
+    h = np.asarray(hersey, dtype=float)
+    return np.column_stack([np.exp(-h / boundary_scale), np.sqrt(h)])

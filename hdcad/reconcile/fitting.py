@@ -103,6 +103,9 @@ class Problem:
     # share u of the viscous loss at t_ref that grows with speed: 0 while effects are named,
     # fitted once they are (refine.refine_viscosity)
     speed_loss: float = 0.0
+    # efficiency: a Stribeck law in Hersey's number (H_b, r, b: efficiency_laws.stribeck_terms)
+    # in place of the named efficiency effects' factors, or None (stribeck.refine_hersey)
+    hersey: tuple[float, float, float] | None = None
     drag_viscosity_exponent: float = 0.0  # k of the low-load drag ∝ ν^k beside a temperature law
     # the low-load factor's shape flat at rated torque (efficiency_laws.low_load_factor):
     # False while effects are named, the better of the two once they are (refine)

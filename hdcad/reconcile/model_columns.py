@@ -113,6 +113,9 @@ def columns(problem: Problem, effects: tuple[str, ...], theta: dict[str, float],
             if order in problem.te_sidebands:
                 add(name, sideband_labels(problem.te_sidebands[order][1]),
                     sidebands(problem, order, full))
+        elif stribeck_takes(problem, name):
+            if name == next(e for e in effects if stribeck_takes(problem, e)):
+                add(name, ["boundary_loss", "film_loss"], -_stribeck(problem, inp), 0.0)
         elif name == "low_load_efficiency":
             f = laws.low_load_factor(inp["alpha"], th["c"], th["q"], inp["input_speed_rpm"],
                                      th["s"], _viscosity(problem, effects, theta, inp),
@@ -225,6 +228,26 @@ def _stop_states(problem: Problem, torque: np.ndarray, branches, rows) -> np.nda
             S = S - plays.centre_lines(torque, r, problem.scales["T0"])
         problem.cache[key] = S
     return problem.cache[key]
+
+
+def stribeck_takes(problem: Problem, effect: str) -> bool:
+    """Whether the problem's Stribeck law stands in for the effect's factor: the low-load
+    one when its pressure exponent r > 0, the temperature law when its slope b > 0."""
+    if problem.hersey is None:
+        return False
+    return {"low_load_efficiency": problem.hersey[1] > 0,
+            "temperature_dependence": problem.hersey[2] > 0}.get(effect, False)
+
+
+def _stribeck(problem: Problem, inp: dict) -> np.ndarray:
+    """The Stribeck law's loss terms on the rows of ``inp`` at the problem's Hersey shapes
+    (boundary scale H_b, pressure exponent r, viscosity slope b [1/K]; b = 0 when no
+    temperature dependence is named, r = 0 when no low-load effect is)."""
+    scale, load, slope = problem.hersey
+    g = (laws.viscosity_ratio(inp["temperature_C"], slope, laws.REFERENCE_TEMPERATURE_C,
+                              problem.viscosity_C) if slope else 1.0)
+    return laws.stribeck_terms(laws.hersey_number(inp["input_speed_rpm"], inp["alpha"], g,
+                                                  load), scale)
 
 
 def _viscosity(problem: Problem, effects: tuple[str, ...], theta: dict, inp: dict

@@ -6,15 +6,16 @@ import math
 
 import numpy as np
 
+from . import creep, plays
 from . import efficiency_laws as laws
 from . import effects as fx
-from . import creep, plays
 from .effects import key_of
 from .fitting import Fit, Problem
 from .gates import BIC_MIN, EXPLAINED_MIN, rss_bic_gain
-from .model_columns import drift_labels, parameters_of
+from .model_columns import drift_labels, parameters_of, stribeck_takes
 from .harmonics import TE_LABELS, frames_of, legendre, te_order_of
 from .rig import RIG_EFFECTS, TORQUE_GAIN_KEY
+from .stribeck import hersey_params
 
 
 def _linear(fit: Fit, effect: str) -> dict[str, float]:
@@ -136,6 +137,9 @@ def _plays(problem: Problem, b: dict[str, float]) -> dict[str, tuple[float, str]
     return out
 
 
+HERSEY_FORM = ("η = η0 + η_n·ln(n/n_ref) − d_b·exp(−H/H_b) − d_f·√H, H = "
+               "ν(t)/ν(20 °C)·(n/1000 r/min)/α^r  (a Stribeck curve in Hersey's number; "
+               "Stribeck 1902, Hersey 1914)")
 CREEP_FORM = ("θ = θ_catalog(T) + Σ c_k·(T_τk − T), c_k ≥ 0  (creep elements: standard "
               "linear solids, T_τk the torque through a first-order lag of relaxation time "
               "τ_k; Zener 1948)")
@@ -161,6 +165,8 @@ def effect_form(problem: Problem, effect: str) -> str:
         return CREEP_FORM
     if effect == "hysteresis" and problem.hysteresis_creep:
         return f"{_loop_form(problem)}; beside it {CREEP_FORM}"
+    if stribeck_takes(problem, effect):
+        return HERSEY_FORM
     return _loop_form(problem) if effect == "hysteresis" else fx.EFFECTS[effect].form
 
 
@@ -219,6 +225,8 @@ def effect_params(problem: Problem, fit: Fit, effect: str) -> dict[str, dict]:
         if te_order_of(effect) in problem.te_sidebands:
             out["modulation_period"] = (1.0 / problem.te_sidebands[te_order_of(effect)][0],
                                         "WG revolutions")
+    elif stribeck_takes(problem, effect):
+        out = hersey_params(problem, fit, effect)
     elif effect == "low_load_efficiency":
         out = {"c": (th["c"], "-"), "q": (th["q"], "-"), "s": (th["s"], "-"),
                "Ke_at_alpha_0.58_1000rpm": (
