@@ -321,7 +321,7 @@ def _parser() -> argparse.ArgumentParser:
                                             "disagree, which effect is missing, and the gap "
                                             "with it added.")
     p.add_argument("kind", choices=["torsion", "transmission", "efficiency", "vibration"],
-                   help="test kind; columns: torsion torque_Nm,twist_rad; transmission "
+                   help="test kind; columns: torsion torque_Nm,twist_rad (time_s optional); transmission "
                         "input_angle_rad,output_angle_rad; efficiency input_speed_rpm,"
                         "load_torque_Nm,temperature_C,efficiency_pct; vibration time_s,"
                         "input_speed_rpm,output_vibration_rad")

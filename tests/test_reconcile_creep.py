@@ -10,13 +10,15 @@ under cycles whose last ones run 2.5 – 4× faster, which no friction loop foll
 
 from __future__ import annotations
 
+import copy
 import math
 
 import numpy as np
 import pytest
 from truth_runs import bench, named_case
 
-from hdcad.reconcile import creep
+from hdcad.errors import InputError
+from hdcad.reconcile import creep, validate_data
 
 
 @pytest.mark.parametrize("tau", [0.7, 5.0, 40.0])
@@ -28,9 +30,32 @@ def test_the_lag_of_a_ramp_is_the_closed_form_response(tau):
     assert np.allclose(creep.lagged(3.0 * t, tau), expected, rtol=1e-10, atol=1e-9)
 
 
+def test_the_lag_over_uneven_time_steps_is_the_closed_form_response():
+    """A logger's time column with uneven steps (0.1 … 2.9 s): the exact step per row gives
+    the ramp's closed-form response at every sample, as with equal steps."""
+    time = np.cumsum(np.random.default_rng(3).uniform(0.1, 2.9, 500))
+    time -= time[0]
+    tau = np.array([4.0, 30.0])
+    states = creep.creep_states(2.0 * time, tau, 1.0, time)
+    expected = -2.0 * tau * (1.0 - np.exp(-time[:, None] / tau))
+    assert np.allclose(states, expected, rtol=1e-9, atol=1e-9)
+
+
+def test_a_time_column_that_runs_back_is_refused():
+    """The optional ``time_s`` column must increase row by row: the error names the column
+    and the row."""
+    torque = np.sin(np.linspace(0, 12, 200))
+    time = np.arange(200.0)
+    time[57] = time[56]
+    with pytest.raises(InputError) as err:
+        validate_data("torsion", {"torque_Nm": torque, "twist_rad": 1e-4 * torque,
+                                  "time_s": time})
+    assert err.value.field == "time_s" and "row 58" in str(err.value)
+
+
 def test_an_element_at_rest_creeps_no_more():
     """A torque held from the first row: the lag starts at rest, so nothing creeps."""
-    states = creep.creep_states(np.full(300, 12.5), creep.relaxation_times(300), 50.0)
+    states = creep.creep_states(np.full(300, 12.5), creep.record_taus(300)[0], 50.0)
     assert np.abs(states).max() < 1e-12
 
 
@@ -66,3 +91,21 @@ def test_a_loop_that_follows_the_loading_rate_is_fitted_as_creep(name):
     step = next(s for s in result["steps"] if s["effect"] == "hysteresis")
     assert "T_τk" in step["form"]
     assert any(k.startswith("delayed_compliance_") for k in step["params"])
+    # suite H's records carry the logger's time: relaxation times in seconds
+    assert {v["unit"] for k, v in step["params"].items() if k.startswith("relaxation_")} == {"s"}
+
+
+def test_without_a_time_column_rows_stand_for_time_and_the_report_says_so():
+    """The same Zener loop without its ``time_s`` column: rows are the clock (the test's
+    sampling was even), the fit is the same within 1 %, the relaxation times are in rows
+    and the report says that rows stand for time."""
+    case = named_case("h", "h-torsion-single-hysteresis-zener-002", 7)
+    with_time = bench.reconcile_case(case)
+    untimed = copy.copy(case)  # the suite's cases are shared between tests
+    untimed.columns = {k: v for k, v in case.columns.items() if k != "time_s"}
+    rows = bench.reconcile_case(untimed)
+    assert rows["rmse_after"] == pytest.approx(with_time["rmse_after"], rel=0.01)
+    step = next(s for s in rows["steps"] if s["effect"] == "hysteresis")
+    assert {v["unit"] for k, v in step["params"].items() if k.startswith("relaxation_")} == {
+        "rows"}
+    assert any("rows are taken as equally spaced in time" in n for n in rows["notes"])

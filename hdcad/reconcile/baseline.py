@@ -241,9 +241,11 @@ def torsion(data: dict, model: GearModel, catalog: Catalog) -> Baseline:
     if free.shape[1] > 2:
         names, units = names + ("printed_reading",), units + ("-",)
         notes.append(_printed_note(curve))
+    inputs = {"torque_Nm": torque, "measured_rad": data["twist_rad"]}
+    if "time_s" in data:  # the logger's time, for a loop that follows the loading rate
+        inputs["time_s"] = data["time_s"]
     base = Baseline("torsion", data["twist_rad"], np.zeros(n), free, names, units, "rad",
-                    figures, notes, {"torque_Nm": torque, "measured_rad": data["twist_rad"]},
-                    curve)
+                    figures, notes, inputs, curve)
     return base
 
 

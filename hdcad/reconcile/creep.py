@@ -12,9 +12,9 @@ delayed compliances enter linearly, so a spectrum of relaxation times (a Prony s
 fitted by bounded linear least squares over fixed τ_k, without a shape search, as the
 friction elements of :mod:`.plays` are.
 
-The torsion record has no time column: its rows are taken as equally spaced in time (a
-logger's fixed sampling rate), and τ is given in rows. The lag is integrated exactly for a
-torque linear between rows (first-order hold).
+The record's time is its ``time_s`` column when the file has one (τ in seconds); else its
+rows are taken as equally spaced in time (a logger's fixed sampling rate) and τ is given in
+rows. The lag is integrated exactly for a torque linear between rows (first-order hold).
 
 References
 ----------
@@ -32,23 +32,35 @@ import math
 import numpy as np
 from scipy.signal import lfilter, lfilter_zi
 
-# relaxation times [rows]: from one row to half the record, this many per decade (an
+# relaxation times: from one step of the record to half its span, this many per decade (an
 # element slower than that creeps through the whole test, the catalog curve's own scale)
 PER_DECADE = 3
-SHORTEST_ROWS = 1.0
 LONGEST_SHARE = 0.5
 
 
-def relaxation_times(n_rows: int) -> np.ndarray:
-    """The elements' relaxation times [rows] for a record of ``n_rows``."""
-    longest = max(LONGEST_SHARE * n_rows, SHORTEST_ROWS)
-    count = max(int(math.ceil(PER_DECADE * math.log10(longest / SHORTEST_ROWS))) + 1, 1)
-    return np.geomspace(SHORTEST_ROWS, longest, count)
+def clock(n_rows: int, time_s: np.ndarray | None = None) -> np.ndarray:
+    """The record's time: its ``time_s`` [s] when the file has one, else the row [rows]."""
+    return np.arange(float(n_rows)) if time_s is None else np.asarray(time_s, dtype=float)
+
+
+def relaxation_times(time: np.ndarray) -> np.ndarray:
+    """The elements' relaxation times, in the unit of ``time`` (:func:`clock`): from its
+    median step to ``LONGEST_SHARE`` of the record's span (the last step counted)."""
+    step = float(np.median(np.diff(time))) if len(time) > 1 else 1.0
+    longest = max(LONGEST_SHARE * (float(np.ptp(time)) + step), step)
+    count = max(int(math.ceil(PER_DECADE * math.log10(longest / step))) + 1, 1)
+    return np.geomspace(step, longest, count)
+
+
+def record_taus(n_rows: int, time_s: np.ndarray | None = None) -> tuple[np.ndarray, str]:
+    """The relaxation times of a record of ``n_rows`` and their unit: seconds when it has a
+    ``time_s`` column, else rows."""
+    return relaxation_times(clock(n_rows, time_s)), "rows" if time_s is None else "s"
 
 
 def lagged(torque_Nm: np.ndarray, tau_rows: float) -> np.ndarray:
     """T_τ [N·m]: the torque through a first-order lag of ``tau_rows``, at rest at the first
-    row, integrated exactly for a torque linear between rows."""
+    row, integrated exactly for a torque linear between equally spaced rows."""
     u = np.asarray(torque_Nm, dtype=float)
     a = math.exp(-1.0 / tau_rows)
     g = tau_rows * (1.0 - a)
@@ -57,10 +69,29 @@ def lagged(torque_Nm: np.ndarray, tau_rows: float) -> np.ndarray:
     return out
 
 
-def creep_states(torque_Nm: np.ndarray, tau_rows: np.ndarray, T0: float) -> np.ndarray:
-    """(T_τk − T)/T0 (n × K) [-]: each element's creep per unit weight c_k·T0 [rad]."""
+def _lagged_uneven(torque_Nm: np.ndarray, taus: np.ndarray, steps: np.ndarray) -> np.ndarray:
+    """(n × K) [N·m]: the torque through first-order lags of ``taus`` over uneven
+    ``steps`` (the same exact step as :func:`lagged`, one row at a time)."""
+    u = np.asarray(torque_Nm, dtype=float)
+    a = np.exp(-steps[:, None] / taus)
+    g = taus / steps[:, None] * (1.0 - a)
+    out = np.empty((len(u), len(taus)))
+    out[0] = u[0]
+    for k in range(1, len(u)):
+        out[k] = a[k - 1] * out[k - 1] + (1.0 - g[k - 1]) * u[k] + (g[k - 1] - a[k - 1]) * u[k - 1]
+    return out
+
+
+def creep_states(torque_Nm: np.ndarray, taus: np.ndarray, T0: float,
+                 time: np.ndarray | None = None) -> np.ndarray:
+    """(T_τk − T)/T0 (n × K) [-]: each element's creep per unit weight c_k·T0 [rad]; the
+    relaxation times ``taus`` in the unit of ``time`` (rows when it is None)."""
     t = np.asarray(torque_Nm, dtype=float)
-    return np.column_stack([(lagged(t, tau) - t) / T0 for tau in tau_rows])
+    steps = np.diff(clock(len(t), time))
+    if len(steps) and np.ptp(steps) > 1e-9 * np.mean(steps):
+        return (_lagged_uneven(t, np.asarray(taus, dtype=float), steps) - t[:, None]) / T0
+    step = float(steps[0]) if len(steps) else 1.0
+    return np.column_stack([(lagged(t, tau / step) - t) / T0 for tau in taus])
 
 
 def centre_lines(states: np.ndarray, torque_Nm: np.ndarray, T0: float) -> np.ndarray:
@@ -73,13 +104,13 @@ def centre_lines(states: np.ndarray, torque_Nm: np.ndarray, T0: float) -> np.nda
     return basis @ coef
 
 
-def loss_at_zero(weights_rad: np.ndarray, tau_rows: np.ndarray, torque_Nm: np.ndarray,
-                 T0: float) -> float:
+def loss_at_zero(weights_rad: np.ndarray, taus: np.ndarray, torque_Nm: np.ndarray,
+                 T0: float, time: np.ndarray | None = None) -> float:
     """The loop's width at zero torque over the record [rad]: the mean contribution where
     the torque falls through zero less where it rises through it (0 when it never
     crosses both ways)."""
     t = np.asarray(torque_Nm, dtype=float)
-    c = creep_states(t, tau_rows, T0) @ np.asarray(weights_rad, dtype=float)
+    c = creep_states(t, taus, T0, time) @ np.asarray(weights_rad, dtype=float)
     rising = (t[:-1] < 0) & (t[1:] >= 0)
     falling = (t[:-1] > 0) & (t[1:] <= 0)
     if not rising.any() or not falling.any():

@@ -22,6 +22,9 @@ COLUMNS = {"torsion": ("torque_Nm", "twist_rad"),
            "efficiency": ("input_speed_rpm", "load_torque_Nm", "temperature_C",
                           "efficiency_pct"),
            "vibration": ("time_s", "input_speed_rpm", "output_vibration_rad")}
+# Columns a kind uses when the file has them: a torsion test's logger time (a loop that
+# follows the loading rate is fitted in seconds instead of rows, reconcile.creep).
+OPTIONAL = {"torsion": ("time_s",)}
 # Fewest rows per kind. Design choice: the workflow cross-validates on 5 folds of contiguous
 # chunks and fits up to ~8 parameters per model, so every fold must keep several times more
 # rows than parameters (efficiency: 30 rows leave 24 to fit on, 3× the largest model, and
@@ -68,7 +71,8 @@ def _column_indices(kind: str, header: list[str], name: str) -> dict[str, int]:
     if missing:
         raise InputError(missing[0], f"column missing from {name}; {kind} needs "
                                      f"{', '.join(COLUMNS[kind])}")
-    return {c: header.index(c) for c in COLUMNS[kind]}
+    return {c: header.index(c) for c in COLUMNS[kind] + OPTIONAL.get(kind, ())
+            if c in header}
 
 
 def _parse(rows: list[list[str]], columns: dict[str, int], name: str) -> dict[str, np.ndarray]:
@@ -93,8 +97,9 @@ def validate_data(kind: str, data: dict) -> dict[str, np.ndarray]:
     missing = [c for c in COLUMNS[kind] if c not in data]
     if missing:
         raise InputError(missing[0], f"column missing; {kind} needs {', '.join(COLUMNS[kind])}")
+    names = COLUMNS[kind] + tuple(c for c in OPTIONAL.get(kind, ()) if c in data)
     try:
-        out = {c: np.asarray(data[c], dtype=float).ravel() for c in COLUMNS[kind]}
+        out = {c: np.asarray(data[c], dtype=float).ravel() for c in names}
     except (TypeError, ValueError):
         raise InputError(kind, "columns must hold numbers") from None
     lengths = {len(v) for v in out.values()}
@@ -115,6 +120,12 @@ def validate_data(kind: str, data: dict) -> dict[str, np.ndarray]:
 def _check_torsion(d: dict[str, np.ndarray]) -> None:
     if np.ptp(d["torque_Nm"]) <= 0:
         raise InputError("torque_Nm", "torque is constant; torsion needs loading cycles")
+    if "time_s" in d:
+        back = np.flatnonzero(np.diff(d["time_s"]) <= 0)
+        if back.size:
+            raise InputError("time_s", f"row {back[0] + 2}: time must increase from row to "
+                                       "row (optional column; leave it out to take the rows "
+                                       "as equally spaced)")
 
 
 def _check_transmission(d: dict[str, np.ndarray]) -> None:

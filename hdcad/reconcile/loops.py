@@ -212,12 +212,13 @@ def refine_plays(problem: Problem, fit: Fit) -> Fit:
 
 
 CREEP = ("hysteresis: creep elements {where}(standard linear solids; relaxation times "
-         "{lo:.3g} … {hi:.3g} rows, delayed compliances fitted): a loop that widens with the "
-         "loading rate, as a grease film's or an elastomer's does")
+         "{lo:.3g} … {hi:.3g} {unit}, delayed compliances fitted): a loop that widens with "
+         "the loading rate, as a grease film's or an elastomer's does")
 CREEP_READING = ("creep: at the rates of this test the creep elements may also stand for a "
                  "friction loop's shape; loops measured at another loading rate tell a "
-                 "viscous loss from friction. The torsion record has no time column: its rows "
-                 "are taken as equally spaced in time, relaxation times given in rows")
+                 "viscous loss from friction")
+NO_CLOCK = ("; the record has no time_s column: its rows are taken as equally spaced in "
+            "time, relaxation times given in rows")
 _CREEP_FORMS = tuple(itertools.product(("alone", "beside"), (False, True)))
 
 
@@ -246,15 +247,16 @@ def refine_creep(problem: Problem, fit: Fit) -> Fit:
     problem.hysteresis_creep, problem.creep_centred = where, centred
     weights = np.array([w for (e, n), w in zip(best.labels, best.beta)
                         if e == "hysteresis" and n.startswith("creep_")])
-    taus = creep.relaxation_times(len(problem.base.y))[weights > 0] if weights.any() else [0.0]
+    taus, unit = creep.record_taus(len(problem.base.y), problem.base.inputs.get("time_s"))
+    taus = taus[weights > 0] if weights.any() else np.zeros(1)
     text = CREEP.format(where="" if where == "alone" else "beside the friction loop ",
-                        lo=taus.min(), hi=taus.max())
+                        lo=taus.min(), hi=taus.max(), unit=unit)
     if where == "alone":
         _replace_loop_notes(problem, text, (centred, False), fit, best, "the friction loop")
     else:
         problem.notes.append(text + (", about the catalog curve" if centred else "")
                              + f", fits {math.sqrt(fit.rss / best.rss):.2f}× closer (BIC)")
-    problem.notes.append(CREEP_READING)
+    problem.notes.append(CREEP_READING + (NO_CLOCK if unit == "rows" else ""))
     return best
 
 

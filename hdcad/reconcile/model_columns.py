@@ -163,7 +163,8 @@ def _creep_states(problem: Problem, rows) -> np.ndarray:
     key = ("creep", problem.creep_centred)
     if key not in problem.cache:
         torque, t0 = problem.base.inputs["torque_Nm"], problem.scales["T0"]
-        C = creep.creep_states(torque, creep.relaxation_times(len(torque)), t0)
+        time = problem.base.inputs.get("time_s")
+        C = creep.creep_states(torque, creep.record_taus(len(torque), time)[0], t0, time)
         if problem.creep_centred:
             C = C - creep.centre_lines(C, torque, t0)
         problem.cache[key] = C

@@ -149,11 +149,12 @@ def _creep(problem: Problem, b: dict[str, float]) -> dict[str, tuple[float, str]
     """Creep elements: each one in use (relaxation time, delayed compliance) and the loop's
     width at zero torque they make over the record."""
     torque, t0 = problem.base.inputs["torque_Nm"], problem.scales["T0"]
-    tau = creep.relaxation_times(len(torque))
+    time = problem.base.inputs.get("time_s")
+    tau, unit = creep.record_taus(len(torque), time)
     w = np.array([b.get(f"creep_{k}", 0.0) for k in range(len(tau))])
-    out = {"creep_loss_at_zero_torque": (creep.loss_at_zero(w, tau, torque, t0), "rad")}
+    out = {"creep_loss_at_zero_torque": (creep.loss_at_zero(w, tau, torque, t0, time), "rad")}
     for k in np.flatnonzero(w):
-        out[f"relaxation_rows_{k}"] = (float(tau[k]), "rows")
+        out[f"relaxation_time_{k}"] = (float(tau[k]), unit)
         out[f"delayed_compliance_{k}"] = (float(w[k] / t0), "rad/(N·m)")
     return out
 
