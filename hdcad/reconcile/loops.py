@@ -154,7 +154,7 @@ def _replace_loop_notes(problem: Problem, text: str, form: tuple, fit: Fit, best
     earlier = (f"{CENTRED} fits", f"{THROUGH_GEAR} fits", PREISACH.split("(")[0],
                PLAYS.split("{")[0])
     problem.notes[:] = [n for n in problem.notes if not n.startswith(earlier)
-                        and SERIES_PLAYS.split("}")[1].split("(")[0] not in n]
+                        and _SERIES_PLAYS_MARK not in n]
     problem.notes.append(text + (", about the catalog curve" if form[0] else "")
                          + (", through the gear's compliance" if form[1] else "")
                          + f", fits {math.sqrt(fit.rss / best.rss):.2f}× closer than "
@@ -166,6 +166,7 @@ PLAYS = ("hysteresis: a sum of {k} friction elements (an Iwan model: slip torque
 SERIES_PLAYS = ("hysteresis: {k} friction elements in series with the gear (slip torques "
                 "{lo:.3g} … {hi:.3g} N·m, weights fitted): past its slip torques the loop "
                 "adds a compliance of its own")
+_SERIES_PLAYS_MARK = " friction elements in series with the gear (slip torques"
 SERIES_CLOSE = ("housing_compliance beside the loop: friction elements in series with the "
                 "gear, without the spring, read almost the same (the spring's ΔBIC over them "
                 "{gain:.1f}, under the {limit:g} an effect is named at); check the housing's "

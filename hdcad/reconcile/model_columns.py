@@ -242,8 +242,8 @@ def stribeck_takes(problem: Problem, effect: str) -> bool:
 
 def _stribeck(problem: Problem, inp: dict) -> np.ndarray:
     """The Stribeck law's loss terms on the rows of ``inp`` at the problem's Hersey shapes
-    (boundary scale H_b, pressure exponent r, viscosity slope b [1/K]; b = 0 when no
-    temperature dependence is named, r = 0 when no low-load effect is)."""
+    (boundary scale H_b, pressure exponent r, viscosity slope b [1/K]; r = 0 where the
+    law does not take the load, b = 0 where it does not take the temperature)."""
     scale, load, slope = problem.hersey
     g = (laws.viscosity_ratio(inp["temperature_C"], slope, laws.REFERENCE_TEMPERATURE_C,
                               problem.viscosity_C) if slope else 1.0)
