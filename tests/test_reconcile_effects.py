@@ -18,7 +18,7 @@ from hdcad.models import resolve
 from hdcad.reconcile import EFFECT_NAMES, EFFECTS, KINDS
 from hdcad.reconcile import efficiency_laws as laws
 from hdcad.reconcile import effects as fx
-from hdcad.reconcile import joint
+from hdcad.reconcile import joint, spring_forms
 from hdcad.reconcile.baseline import catalog_twist
 from hdcad.reconcile.noise import correlation_time, noise_model, noise_rms
 
@@ -136,7 +136,7 @@ def test_housing_compliance_is_a_spring_in_series():
     """An extra spring K_h in series with the gear's spring K: 1/K_total = 1/K + 1/K_h."""
     k, k_h = 148300.0, 5.0e5                # FD-32 spring constant (table 314-1)
     t = np.linspace(-150, 150, 7)
-    total = t / k + fx.compliance_twist(t, k_h)
+    total = t / k + spring_forms.compliance_twist(t, k_h)
     np.testing.assert_allclose(total, t / (1 / (1 / k + 1 / k_h)), rtol=1e-12)
 
 
@@ -146,11 +146,11 @@ def test_stiffening_spring_solves_its_cubic_and_is_linear_without_a_knee():
     (1 + u²)·k = 5·k (u³ + u = 10 → u = 2), and T_k = ∞ is the linear spring."""
     torque = np.linspace(-50.0, 50.0, 401)
     knee = 5.0
-    u = fx.progressive_twist(torque, knee) / knee
+    u = spring_forms.progressive_twist(torque, knee) / knee
     assert np.max(np.abs(u + u ** 3 - torque / knee)) < 1e-12
-    assert fx.progressive_twist(np.array([1e-4]), knee)[0] == pytest.approx(1e-4, rel=1e-6)
-    assert 50.0 / fx.progressive_twist(np.array([50.0]), knee)[0] == pytest.approx(5.0)
-    assert np.array_equal(fx.progressive_twist(torque, math.inf), torque)
+    assert spring_forms.progressive_twist(np.array([1e-4]), knee)[0] == pytest.approx(1e-4, rel=1e-6)
+    assert 50.0 / spring_forms.progressive_twist(np.array([50.0]), knee)[0] == pytest.approx(5.0)
+    assert np.array_equal(spring_forms.progressive_twist(torque, math.inf), torque)
 
 
 def test_te_2x_has_period_pi_and_te_1x_period_two_pi():

@@ -245,28 +245,6 @@ def branch_direction(n: int, branches: tuple[np.ndarray, int]) -> np.ndarray:
     return out
 
 
-def compliance_twist(torque_Nm: np.ndarray, stiffness_Nm_per_rad: float) -> np.ndarray:
-    """Twist of an extra spring in series [rad]: T/K_h (housing, shafts, fixtures)."""
-    return torque_Nm / stiffness_Nm_per_rad
-
-
-def progressive_twist(torque_Nm: np.ndarray, knee_Nm: float) -> np.ndarray:
-    """Twist per unit low-torque compliance [rad·N·m/rad = N·m] of a series spring that
-    stiffens: k·θ + k·θ³/θ_k² = T (a Duffing spring; contact that closes gradually,
-    bolted joints), written θ = (1/k)·T_k·u with u + u³ = T/T_k, T_k = k·θ_k the torque
-    where the cubic term equals the linear one. Solved by Cardano's formula; T_k = ∞ is the
-    linear spring T/k.
-
-    References: Rivin, E. I. (1999) *Stiffness and Damping in Mechanical Design*, Marcel
-    Dekker, ch. 4 (contact deformations: stiffness that grows with load).
-    """
-    if not math.isfinite(knee_Nm):
-        return np.asarray(torque_Nm, dtype=float)
-    x = np.abs(torque_Nm) / knee_Nm
-    a = np.cbrt(0.5 * x + np.sqrt(0.25 * x * x + 1.0 / 27.0))
-    return np.sign(torque_Nm) * knee_Nm * (a - 1.0 / (3.0 * a))
-
-
 def harmonic_error(wg_angle_rad: np.ndarray, order: int, amplitude_rad: float,
                    phase_rad: float) -> np.ndarray:
     """Transmission error at the output [rad]: a·sin(k·φ + p), k cycles per WG revolution."""

@@ -87,9 +87,8 @@ class Problem:
     # hysteresis as a sum of friction elements with fixed slip torques, weighted freely
     # (plays: an Iwan model) instead of the Bouc–Wen loop; tried last (loops.refine_plays)
     hysteresis_plays: bool = False
-    # hysteresis as creep elements (creep: standard linear solids over a spectrum of
-    # relaxation times): "alone" in place of the friction loop, "beside" it, or None; their
-    # centre lines taken out (creep_centred) or not; tried last (loops.refine_creep)
+    # hysteresis as creep elements (creep.py): "alone" in place of the friction loop, "beside"
+    # it, or None; their centre lines taken out (creep_centred) or not (loops.refine_creep)
     hysteresis_creep: str | None = None
     creep_centred: bool = False
     # constant C [°C] of the viscosity–temperature law (efficiency_laws.VISCOSITY_LAWS_C):
@@ -103,16 +102,18 @@ class Problem:
     # share u of the viscous loss at t_ref that grows with speed: 0 while effects are named,
     # fitted once they are (refine.refine_viscosity)
     speed_loss: float = 0.0
-    # efficiency: a Stribeck law in Hersey's number (H_b, r, b: efficiency_laws.stribeck_terms)
-    # in place of the named efficiency effects' factors, or None (stribeck.refine_hersey)
+    # efficiency: a Stribeck law's shapes (H_b, r, b) in place of factors (stribeck.py), or None
     hersey: tuple[float, float, float] | None = None
     drag_viscosity_exponent: float = 0.0  # k of the low-load drag ∝ ν^k beside a temperature law
     # the low-load factor's shape flat at rated torque (efficiency_laws.low_load_factor):
     # False while effects are named, the better of the two once they are (refine)
     low_load_flat: bool = False
-    # knee torque T_k [N·m] of a housing spring that stiffens (effects.progressive_twist):
+    # knee torque T_k [N·m] of a housing spring that stiffens (spring_forms.progressive_twist):
     # ∞ (linear) while effects are named, fitted once they are (springs.stiffening)
     housing_knee: float = math.inf
+    # torque T_o [N·m] past which a linear housing spring's joint opens and softens: ∞ while
+    # effects are named, fitted once they are (springs.refine_opening)
+    housing_opening: float = math.inf
     # torque that holds a play at one side until the load passes it, as a share of T0
     # (effects.backlash_twist): 0 while effects are named, fitted once backlash is
     # (refine.refine_play)

@@ -18,7 +18,7 @@ import numpy as np
 from . import baseline as baselines
 from . import efficiency_laws as laws
 from . import effects as fx
-from . import creep, plays, rig
+from . import creep, plays, rig, spring_forms
 from .effects import key_of
 from .harmonics import (harmonic, legendre, overtones_of, sideband_labels, sidebands,
                         te_column_labels, te_order_of)
@@ -103,8 +103,11 @@ def columns(problem: Problem, effects: tuple[str, ...], theta: dict[str, float],
                 after = inp["record_position"] >= problem.play_step
                 add(name, ["lost_motion_step"], play * after)
         elif name == "housing_compliance":
-            add(name, ["compliance"], fx.progressive_twist(inp["torque_Nm"],
+            add(name, ["compliance"], spring_forms.progressive_twist(inp["torque_Nm"],
                                                            problem.housing_knee), 0.0)
+            if problem.housing_opening < np.inf:  # the compliance the opened joint adds
+                add(name, ["opening_compliance"],
+                    spring_forms.opening_twist(inp["torque_Nm"], problem.housing_opening), 0.0)
         elif name in ("te_1x", "te_2x"):
             order = te_order_of(name)
             add(name, te_column_labels(problem, order), harmonic(problem, order, theta, full))

@@ -6,7 +6,7 @@ import math
 
 import numpy as np
 
-from . import creep, plays
+from . import creep, plays, spring_forms
 from . import efficiency_laws as laws
 from . import effects as fx
 from .effects import key_of
@@ -219,8 +219,12 @@ def effect_params(problem: Problem, fit: Fit, effect: str) -> dict[str, dict]:
         out = {"K_h": (1.0 / c if c > 0 else math.inf, "N·m/rad"), "compliance": (c, "rad/(N·m)")}
         knee = problem.housing_knee
         if math.isfinite(knee) and c > 0:  # a spring that stiffens: K_h is its value at T = 0
-            u = float(fx.progressive_twist(np.array(problem.scales["T0"]), knee)) / knee
+            u = float(spring_forms.progressive_twist(np.array(problem.scales["T0"]), knee)) / knee
             out.update({"T_k": (knee, "N·m"), "K_h_at_T0": ((1 + 3 * u * u) / c, "N·m/rad")})
+        if math.isfinite(problem.housing_opening):  # past T_o the opened joint is softer
+            opened = c + b.get("opening_compliance", 0.0)
+            out.update({"T_o": (problem.housing_opening, "N·m"),
+                        "K_h_opened": (1.0 / opened if opened > 0 else math.inf, "N·m/rad")})
     elif effect in ("te_1x", "te_2x"):
         out = {**_te(b, fit.theta), **_frames(problem, b, te_order_of(effect))}
         if te_order_of(effect) in problem.te_sidebands:

@@ -28,6 +28,7 @@ from .loops import refine_creep, refine_hysteresis, refine_plays, refine_preisac
 from .params import play_along_record
 from .readings import free_scale
 from .rig import step_position
+from .springs import refine_opening
 from .stribeck import refine_hersey
 from .te_forms import refine_te_order, refine_te_overtones, refine_te_sidebands
 
@@ -69,7 +70,7 @@ def refine(problem: Problem, fit: Fit) -> Fit:
         problem, refine_te_order(problem, fit))))
     fit = refine_play_drift(problem, refine_play(problem, fit))
     fit = refine_creep(problem, refine_plays(problem, refine_preisach(problem, fit)))
-    return refine_stiffness(problem, refine_hersey(problem, fit))
+    return refine_stiffness(problem, refine_opening(problem, refine_hersey(problem, fit)))
 
 
 def refine_damping(problem: Problem, fit: Fit) -> Fit:

@@ -26,7 +26,7 @@ from dataclasses import replace
 from scipy.optimize import minimize_scalar
 
 from .fitting import Fit, Problem, fit_model, rss_at
-from .gates import BIC_MIN, Candidate, gate
+from .gates import BIC_MIN, EXPLAINED_MIN, Candidate, beyond, gate
 
 # A clearance is taken up at low torque: the catalog gives lost motion at ±3 % of the
 # torque of its spring constant (FD table 314-1: ±load / load = 0.029–0.033). A backlash
@@ -55,7 +55,7 @@ def slow_backlash(problem: Problem, start: Fit, best: Candidate, singles: dict[s
                   sigma: float, tau: float) -> Candidate | None:
     """A backlash named alone, or one beside another effect taken up only slowly (tanh
     width > ``TAKEUP_MAX``·T0), read as a housing spring that stiffens
-    (:func:`.effects.progressive_twist`, knee torque fitted) when the backlash does not fit
+    (:func:`.spring_forms.progressive_twist`, knee torque fitted) when the backlash does not fit
     clearly better (ΔBIC ≤ ``BIC_MIN``) and the spring passes the gates (over the other
     member alone too, in a pair) with its knee above the floor of ``KNEE_BOUNDS`` (a knee
     at the floor is a clearance's step); else None. Beside a loop a narrow backlash is not
@@ -128,3 +128,46 @@ def _knee_fit(problem: Problem, effects: tuple[str, ...], theta: dict[str, float
     problem.housing_knee = t0 * math.exp(found.x)
     fit = fit_model(problem, effects, theta)
     return replace(fit, n_params=fit.n_params + 1)
+
+
+# T_o / T0 of a joint that opens: below a tenth of the test's torque the opened joint's
+# compliance is the linear spring's own, and one that opens only past 95 % bends nothing
+OPENING_BOUNDS = (0.1, 0.95)
+OPENING = ("housing_compliance: the joint opens past {t:.3g} N·m (T/T0 = {share:.2f}) and "
+           "its compliance grows from {c1:.3g} to {c2:.3g} rad/(N·m), a bolted flange's "
+           "interface separating at its edge (fits {closer:.2f}× closer than a linear spring, "
+           "BIC)")
+
+
+def refine_opening(problem: Problem, fit: Fit) -> Fit:
+    """A named linear housing spring whose joint opens past a torque T_o and softens
+    (:func:`.spring_forms.opening_twist`, the opened joint's compliance an amplitude, T_o
+    searched on its logarithm), kept when it lowers the BIC by more than ``BIC_MIN`` and
+    explains ``EXPLAINED_MIN`` noise variances more (:func:`.gates.beyond`). The catalog
+    curve stiffens with load; a series joint that softens bends it the other way, which
+    neither the stiffness scale nor a linear spring follows. Leaves
+    ``problem.housing_opening`` set when it is kept."""
+    if (problem.kind != "torsion" or "housing_compliance" not in fit.effects
+            or math.isfinite(problem.housing_knee) or math.isfinite(problem.housing_opening)):
+        return fit
+    t0 = problem.scales["T0"]
+
+    def held(log_share: float) -> float:
+        problem.housing_opening = t0 * math.exp(log_share)
+        return rss_at(problem, fit.effects, fit.theta)
+
+    lo, hi = (math.log(b) for b in OPENING_BOUNDS)
+    found = minimize_scalar(held, bounds=(lo, hi), method="bounded",
+                            options={"xatol": 0.02, "maxiter": 30})
+    problem.housing_opening = t0 * math.exp(found.x)
+    opened = fit_model(problem, fit.effects, fit.theta)
+    opened = replace(opened, n_params=opened.n_params + 1)
+    if not beyond(problem, fit, opened, explained_min=EXPLAINED_MIN):
+        problem.housing_opening = math.inf
+        return fit
+    b = {n: v for (e, n), v in zip(opened.labels, opened.beta) if e == "housing_compliance"}
+    problem.notes.append(OPENING.format(
+        t=problem.housing_opening, share=problem.housing_opening / t0, c1=b["compliance"],
+        c2=b["compliance"] + b.get("opening_compliance", 0.0),
+        closer=math.sqrt(fit.rss / opened.rss)))
+    return opened
