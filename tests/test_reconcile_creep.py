@@ -42,15 +42,28 @@ def test_the_lag_over_uneven_time_steps_is_the_closed_form_response():
 
 
 def test_a_time_column_that_runs_back_is_refused():
-    """The optional ``time_s`` column must increase row by row: the error names the column
-    and the row."""
+    """The optional ``time_s`` column must not run back: the error names the column and the
+    row."""
     torque = np.sin(np.linspace(0, 12, 200))
     time = np.arange(200.0)
-    time[57] = time[56]
+    time[57] = time[55]
     with pytest.raises(InputError) as err:
         validate_data("torsion", {"torque_Nm": torque, "twist_rad": 1e-4 * torque,
                                   "time_s": time})
     assert err.value.field == "time_s" and "row 58" in str(err.value)
+
+
+def test_a_repeated_time_leaves_the_lag_where_it_was():
+    """A logger's stale sample repeats a row with its time: the lag over a step of 0 is
+    the lag of the row before, and the rest of the record is as without the repeat."""
+    time = np.cumsum(np.full(300, 0.5))
+    torque = 40.0 * np.sin(time / 9.0)
+    tau = creep.record_taus(300, time)[0]
+    repeated = np.insert(np.arange(300), 120, 119)  # row 119 logged twice
+    once = creep.creep_states(torque, tau, 40.0, time)
+    twice = creep.creep_states(torque[repeated], tau, 40.0, time[repeated])
+    assert np.isfinite(twice).all()
+    assert np.allclose(twice, once[repeated], rtol=1e-9, atol=1e-12)
 
 
 def test_an_element_at_rest_creeps_no_more():

@@ -45,8 +45,10 @@ def clock(n_rows: int, time_s: np.ndarray | None = None) -> np.ndarray:
 
 def relaxation_times(time: np.ndarray) -> np.ndarray:
     """The elements' relaxation times, in the unit of ``time`` (:func:`clock`): from its
-    median step to ``LONGEST_SHARE`` of the record's span (the last step counted)."""
-    step = float(np.median(np.diff(time))) if len(time) > 1 else 1.0
+    median step (of those that advance) to ``LONGEST_SHARE`` of the record's span (the last
+    step counted)."""
+    steps = np.diff(time)
+    step = float(np.median(steps[steps > 0])) if np.any(steps > 0) else 1.0
     longest = max(LONGEST_SHARE * (float(np.ptp(time)) + step), step)
     count = max(int(math.ceil(PER_DECADE * math.log10(longest / step))) + 1, 1)
     return np.geomspace(step, longest, count)
@@ -71,10 +73,12 @@ def lagged(torque_Nm: np.ndarray, tau_rows: float) -> np.ndarray:
 
 def _lagged_uneven(torque_Nm: np.ndarray, taus: np.ndarray, steps: np.ndarray) -> np.ndarray:
     """(n × K) [N·m]: the torque through first-order lags of ``taus`` over uneven
-    ``steps`` (the same exact step as :func:`lagged`, one row at a time)."""
+    ``steps`` (the same exact step as :func:`lagged`, one row at a time; a step of 0, a
+    logger's repeated sample, leaves the lag where it was)."""
     u = np.asarray(torque_Nm, dtype=float)
     a = np.exp(-steps[:, None] / taus)
-    g = taus / steps[:, None] * (1.0 - a)
+    with np.errstate(divide="ignore", invalid="ignore"):  # a repeated time: the row holds
+        g = np.where(steps[:, None] > 0, taus / steps[:, None] * (1.0 - a), 1.0)
     out = np.empty((len(u), len(taus)))
     out[0] = u[0]
     for k in range(1, len(u)):

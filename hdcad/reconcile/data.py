@@ -121,11 +121,14 @@ def _check_torsion(d: dict[str, np.ndarray]) -> None:
     if np.ptp(d["torque_Nm"]) <= 0:
         raise InputError("torque_Nm", "torque is constant; torsion needs loading cycles")
     if "time_s" in d:
-        back = np.flatnonzero(np.diff(d["time_s"]) <= 0)
+        back = np.flatnonzero(np.diff(d["time_s"]) < 0)
         if back.size:
-            raise InputError("time_s", f"row {back[0] + 2}: time must increase from row to "
-                                       "row (optional column; leave it out to take the rows "
-                                       "as equally spaced)")
+            raise InputError("time_s", f"row {back[0] + 2}: time runs back (a repeated time "
+                                       "is allowed; the column is optional: leave it out to "
+                                       "take the rows as equally spaced)")
+        if np.ptp(d["time_s"]) <= 0:
+            raise InputError("time_s", "time does not advance (the column is optional: leave "
+                                       "it out to take the rows as equally spaced)")
 
 
 def _check_transmission(d: dict[str, np.ndarray]) -> None:
