@@ -168,6 +168,9 @@ def effect_form(problem: Problem, effect: str) -> str:
         return f"{_loop_form(problem)}; beside it {CREEP_FORM}"
     if stribeck_takes(problem, effect):
         return HERSEY_FORM
+    if effect == "housing_compliance" and math.isfinite(problem.housing_opening):
+        return (f"{fx.EFFECTS[effect].form}; a joint that opens: + c_o·sign(T)·max(|T| − T_o, 0),"
+                " c_o ≥ 0 (its compliance grows past T_o; VDI 2230 opening limit)")
     return _loop_form(problem) if effect == "hysteresis" else fx.EFFECTS[effect].form
 
 
