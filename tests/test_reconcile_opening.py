@@ -42,3 +42,13 @@ def test_a_bolted_flange_that_opens_is_fitted_as_a_joint_that_softens(name, befo
     softening = params["K_h"]["value"] / params["K_h_opened"]["value"]
     assert 1.4 / 1.05 <= softening <= 2.0 * 1.05
     assert any("the joint opens past" in n for n in result["notes"])
+
+
+def test_a_linear_series_spring_stays_linear():
+    """Suite B's series spring (seed 7, 2 per cell) is linear: the opening does not pay for
+    itself and the spring is reported without it."""
+    case = named_case("b", "b-torsion-single-housing_compliance-series-001", 7)
+    result = bench.reconcile_case(case)
+    step = next(s for s in result["steps"] if s["effect"] == "housing_compliance")
+    assert "T_o" not in step["params"]
+    assert not any("the joint opens past" in n for n in result["notes"])

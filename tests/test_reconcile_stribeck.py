@@ -54,3 +54,13 @@ def test_the_contact_pressure_s_exponent_is_the_hertzian_one():
     case = named_case("h", "h-efficiency-single-lowload-stribeck-002", 7)
     params = _hersey_step(bench.reconcile_case(case))["params"]
     assert params["pressure_exponent_r"]["value"] == pytest.approx(0.5, abs=0.05)
+
+
+@pytest.mark.parametrize("name", ["b-efficiency-single-low_load_efficiency-kepower-000",
+                                  "c-efficiency-single-temperaturedependence-additive-001"])
+def test_separate_factors_stay_separate_factors(name):
+    """Suite B's power-law Ke and C's additive temperature law (seed 7, 2 per cell) are no
+    loss in Hersey's number: the law does not pay for itself and the factors stay."""
+    result = bench.reconcile_case(named_case(name[0], name, 7))
+    assert not any("Stribeck law in Hersey's number" in n for n in result["notes"])
+    assert all("Hersey" not in s["form"] for s in result["steps"])

@@ -152,15 +152,21 @@ def hersey_number(speed_rpm: np.ndarray, alpha: np.ndarray, viscosity: np.ndarra
     return np.asarray(viscosity, dtype=float) * n / a ** load_exponent
 
 
+# the amplitudes of the Stribeck law's terms, as :func:`stribeck_terms` gives them
+STRIBECK_LABELS = ("boundary_loss", "film_loss", "viscous_loss")
+
+
 def stribeck_terms(hersey: np.ndarray, boundary_scale: float) -> np.ndarray:
-    """(n × 2) [-]: the loss terms of a Stribeck curve in Hersey's number H, boundary
-    friction exp(−H/H_b) that fades as the film builds and film shear √H that grows with
-    it; the loss is d_b·exp(−H/H_b) + d_f·√H, d ≥ 0, lowest between the two regimes.
+    """(n × 3) [-]: the loss terms of a Stribeck curve in Hersey's number H, boundary
+    friction exp(−H/H_b) that fades as the film builds, and the film's shear, √H in an
+    elastohydrodynamic contact and H in a full hydrodynamic film (Petroff); the loss is
+    d_b·exp(−H/H_b) + d_f·√H + d_v·H, d ≥ 0, lowest between the regimes.
 
     References: Stribeck, R. (1902) "Die wesentlichen Eigenschaften der Gleit- und
     Rollenlager", Z. VDI 46; Hersey, M. D. (1914) J. Wash. Acad. Sci. 4, 542–552;
     Gelinck, E. R. M.; Schipper, D. J. (2000) "Calculation of Stribeck curves for line
-    contacts", Tribol. Int. 33, 175–181 (film friction ∝ √H in the EHL regime).
+    contacts", Tribol. Int. 33, 175–181 (film friction ∝ √H in the EHL regime); Petroff,
+    N. P. (1883) (a full film's friction ∝ ν·N/P).
     """
     h = np.asarray(hersey, dtype=float)
-    return np.column_stack([np.exp(-h / boundary_scale), np.sqrt(h)])
+    return np.column_stack([np.exp(-h / boundary_scale), np.sqrt(h), h])

@@ -165,6 +165,15 @@ def beyond(problem: Problem, *alternatives: Fit, explained_min: float) -> bool:
             and gained >= explained_min)
 
 
+def bic_choice(problem: Problem, fits: list) -> int:
+    """Index of the fit in ``fits`` (forms of one model, nested or not) with the lowest BIC,
+    N/τ from the closest one's residual: a form that contains another wins only when its
+    extra parameters pay for themselves."""
+    closest = min(fits, key=lambda f: f.rss)
+    n_eff = effective_n(problem, closest.residual(problem))
+    return bic_best({i: (f.rss, f.n_params) for i, f in enumerate(fits)}, n_eff)
+
+
 def bic_best(fits: dict, n_eff: float):
     """The key of ``fits`` ({key: (rss, parameters)}) with the lowest BIC at n_eff."""
     return min(fits, key=lambda k: n_eff * math.log(max(fits[k][0], 1e-300))

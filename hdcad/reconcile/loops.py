@@ -23,7 +23,8 @@ from . import creep, plays
 from .bounded import solve
 from .fitting import POLISH_TOL, Fit, Problem, best_setting, finish
 from .model_columns import columns, nonlinear
-from .gates import BIC_MIN, EXPLAINED_MIN, Candidate, beyond, bic_best, effective_n, gate
+from .gates import (BIC_MIN, EXPLAINED_MIN, Candidate, beyond, bic_best, bic_choice,
+                    effective_n, gate)
 
 THROUGH_GEAR = ("hysteresis: a friction torque in parallel with the gear's spring (its twist "
                 "the torque × the catalog curve's local compliance)")
@@ -213,8 +214,9 @@ def refine_plays(problem: Problem, fit: Fit) -> Fit:
 
 
 CREEP = ("hysteresis: creep elements {where}(standard linear solids; relaxation times "
-         "{lo:.3g} … {hi:.3g} {unit}, delayed compliances fitted): a loop that widens with "
-         "the loading rate, as a grease film's or an elastomer's does")
+         "{lo:.3g} … {hi:.3g} {unit}, delayed compliances fitted): a loop that lags the "
+         "torque in time and would widen with the loading rate, as a grease film's or an "
+         "elastomer's does")
 CREEP_READING = ("creep: at the rates of this test the creep elements may also stand for a "
                  "friction loop's shape; loops measured at another loading rate tell a "
                  "viscous loss from friction")
@@ -226,9 +228,10 @@ _CREEP_FORMS = tuple(itertools.product(("alone", "beside"), (False, True)))
 def refine_creep(problem: Problem, fit: Fit) -> Fit:
     """A named hysteresis as creep elements with fixed relaxation times, weighted freely
     (:mod:`.creep`), in place of the loop found so far or beside it, about the catalog
-    curve or not, kept when it lowers the BIC by more than ``BIC_MIN`` and explains
-    ``EXPLAINED_MIN`` noise variances more (:func:`.gates.beyond`): a loop whose width
-    follows the loading rate, which no friction loop does. Leaves
+    curve or not (the form by BIC: beside the loop holds the loop alone too), kept when it
+    lowers the BIC by more than ``BIC_MIN`` and explains ``EXPLAINED_MIN`` noise variances
+    more (:func:`.gates.beyond`): a loop whose width follows the loading rate, which no
+    friction loop does over several rates (at one rate the two may read alike). Leaves
     ``problem.hysteresis_creep`` set when it is kept."""
     if (problem.kind != "torsion" or "hysteresis" not in fit.effects
             or problem.base.curve is None or problem.hysteresis_creep):
@@ -241,7 +244,7 @@ def refine_creep(problem: Problem, fit: Fit) -> Fit:
         problem.hysteresis_creep, problem.creep_centred = where, centred
         shapes = in_use - loop if where == "alone" else in_use
         trials.append((finish(problem, fit.effects, fit.theta, shapes), where, centred))
-    best, where, centred = min(trials, key=lambda t: t[0].rss)
+    best, where, centred = trials[bic_choice(problem, [t[0] for t in trials])]
     if not beyond(problem, fit, best, explained_min=EXPLAINED_MIN):
         problem.hysteresis_creep, problem.creep_centred = None, False
         return fit

@@ -118,7 +118,7 @@ def columns(problem: Problem, effects: tuple[str, ...], theta: dict[str, float],
                     sidebands(problem, order, full))
         elif stribeck_takes(problem, name):
             if name == next(e for e in effects if stribeck_takes(problem, e)):
-                add(name, ["boundary_loss", "film_loss"], -_stribeck(problem, inp), 0.0)
+                add(name, list(laws.STRIBECK_LABELS), -_stribeck(problem, inp), 0.0)
         elif name == "low_load_efficiency":
             f = laws.low_load_factor(inp["alpha"], th["c"], th["q"], inp["input_speed_rpm"],
                                      th["s"], _viscosity(problem, effects, theta, inp),
@@ -257,9 +257,13 @@ def _stribeck(problem: Problem, inp: dict) -> np.ndarray:
 def _viscosity(problem: Problem, effects: tuple[str, ...], theta: dict, inp: dict
                ) -> np.ndarray | None:
     """ν(t)/ν(20 °C) of the named temperature law on the rows of ``inp``, for a drag that
-    grows with viscosity."""
+    grows with viscosity; the Stribeck law's own when it stands in for the temperature law
+    (one viscosity in the model)."""
     if not problem.drag_viscosity_exponent or "temperature_dependence" not in effects:
         return None
+    if stribeck_takes(problem, "temperature_dependence"):
+        return laws.viscosity_ratio(inp["temperature_C"], problem.hersey[2],
+                                    laws.REFERENCE_TEMPERATURE_C, problem.viscosity_C)
     return laws.temperature_ratio(inp["temperature_C"],
                                   theta[key_of("temperature_dependence", "b")],
                                   laws.REFERENCE_TEMPERATURE_C, problem.viscosity_C,

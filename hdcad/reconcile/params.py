@@ -137,9 +137,10 @@ def _plays(problem: Problem, b: dict[str, float]) -> dict[str, tuple[float, str]
     return out
 
 
-HERSEY_FORM = ("η = η0 + η_n·ln(n/n_ref) − d_b·exp(−H/H_b) − d_f·√H, H = "
-               "ν(t)/ν(20 °C)·(n/1000 r/min)/α^r  (a Stribeck curve in Hersey's number; "
-               "Stribeck 1902, Hersey 1914)")
+HERSEY_FORM = ("η = (η0 + η_n·ln(n/n_ref) − d_b·exp(−H/H_b) − d_f·√H − d_v·H)·(the other "
+               "named factor, if one is kept), H = ν(t)/ν(20 °C)·(n/1000 r/min)/α^r  (a "
+               "Stribeck curve in Hersey's number; Stribeck 1902, Hersey 1914, Petroff "
+               "1883)")
 CREEP_FORM = ("θ = θ_catalog(T) + Σ c_k·(T_τk − T), c_k ≥ 0  (creep elements: standard "
               "linear solids, T_τk the torque through a first-order lag of relaxation time "
               "τ_k; Zener 1948)")

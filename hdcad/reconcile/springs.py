@@ -23,6 +23,7 @@ from __future__ import annotations
 import math
 from dataclasses import replace
 
+import numpy as np
 from scipy.optimize import minimize_scalar
 
 from .fitting import Fit, Problem, fit_model, rss_at
@@ -161,7 +162,10 @@ def refine_opening(problem: Problem, fit: Fit) -> Fit:
                             options={"xatol": 0.02, "maxiter": 30})
     problem.housing_opening = t0 * math.exp(found.x)
     opened = fit_model(problem, fit.effects, fit.theta)
-    opened = replace(opened, n_params=opened.n_params + 1)
+    # the shapes in use as ``fit`` counts them (its loop's form, its refinements' terms),
+    # the opened joint's compliance if it is used, and T_o
+    opened = replace(opened, n_params=fit.n_params - int(np.count_nonzero(fit.beta))
+                     + int(np.count_nonzero(opened.beta)) + 1)
     if not beyond(problem, fit, opened, explained_min=EXPLAINED_MIN):
         problem.housing_opening = math.inf
         return fit

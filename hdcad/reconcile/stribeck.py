@@ -4,12 +4,14 @@ film's one parameter H = ν·N/P, so a loss that changes with load at one speed 
 speed and temperature too, which the product η0·Ke(α)·F(t) of separate factors does not
 follow.
 
-η = η0 + η_n·ln(n/n_ref) − d_b·exp(−H/H_b) − d_f·√H (:func:`.efficiency_laws.stribeck_terms`):
-the level and its speed slope are the baseline's, the two losses are amplitudes, and the
-shapes are the boundary scale H_b, the pressure exponent r (P ∝ α^r) when a low-load effect
-is named and the viscosity slope b when a temperature dependence is (the viscosity law
-chosen for it). Kept when it lowers the BIC by more than ``BIC_MIN`` and explains
-``EXPLAINED_MIN`` noise variances more than the factors (:func:`.gates.beyond`).
+η = η0 + η_n·ln(n/n_ref) − d_b·exp(−H/H_b) − d_f·√H − d_v·H
+(:func:`.efficiency_laws.stribeck_terms`): the level and its speed slope are the baseline's,
+the three losses are amplitudes, and the shapes are the boundary scale H_b, the pressure
+exponent r (P ∝ α^r) where the law takes the load and the viscosity slope b where it takes
+the temperature (the viscosity law chosen for it); a factor the law does not take still
+multiplies. The form (both factors, or either) is chosen by BIC, and kept when it lowers
+the BIC by more than ``BIC_MIN`` and explains ``EXPLAINED_MIN`` noise variances more than
+the factors (:func:`.gates.beyond`).
 
 References
 ----------
@@ -30,8 +32,8 @@ from . import efficiency_laws as laws
 from .bounded import solve
 from .effects import key_of, nonlinear_parameters
 from .fitting import POLISH_TOL, Fit, Problem, finish
-from .gates import EXPLAINED_MIN, beyond
-from .model_columns import columns, nonlinear, stribeck_takes
+from .gates import EXPLAINED_MIN, beyond, bic_choice
+from .model_columns import columns, stribeck_takes
 
 # bounds of the shapes: H_b (in log), the pressure exponent r, the viscosity slope b [1/K]
 # (the temperature dependence's own bounds)
@@ -41,7 +43,8 @@ _STARTS_H = (0.1, 0.4, 1.5, 6.0)
 _STARTS_R = (0.5, 1.0)
 _EVALUATIONS = 80
 TEXT = ("efficiency: a Stribeck law in Hersey's number H = {h} in place of {named}'s "
-        "factors (boundary friction fading as exp(−H/{hb:.3g}), film shear ∝ √H), fits "
+        "factors (boundary friction fading as exp(−H/{hb:.3g}), film shear ∝ √H and H), "
+        "fits "
         "{closer:.2f}× closer (BIC): the loss follows {what} through the lubricant film's "
         "one parameter")
 
@@ -54,19 +57,15 @@ def refine_hersey(problem: Problem, fit: Fit) -> Fit:
     named = [e for e in fit.effects if e in laws.HERSEY_EFFECTS]
     if problem.kind != "efficiency" or not named or problem.hersey is not None:
         return fit
-    # the other factor's refinements (a band, a speed term, a drag exponent) stay counted
-    # while one factor is kept
-    extras = fit.n_params - int(np.count_nonzero(fit.beta)) - len(nonlinear(problem.kind,
-                                                                            fit.effects))
+    in_use = fit.n_params - int(np.count_nonzero(fit.beta))
     trials = []
     for form in _forms(named):
         x, count = _fit_shapes(problem, fit, *form)
         problem.hersey = x
-        kept = tuple(e for e in fit.effects if not stribeck_takes(problem, e))
+        replaced = sum(_shapes_of(problem, fit, e) for e in named if stribeck_takes(problem, e))
         trials.append((finish(problem, fit.effects, fit.theta,
-                              len(nonlinear(problem.kind, kept)) + count
-                              + (extras if set(kept) & set(named) else 0)), x, form))
-    best, problem.hersey, (load, warm) = min(trials, key=lambda t: t[0].rss)
+                              max(in_use - replaced, 0) + count), x, form))
+    best, problem.hersey, (load, warm) = trials[bic_choice(problem, [t[0] for t in trials])]
     if not beyond(problem, fit, best, explained_min=EXPLAINED_MIN):
         problem.hersey = None
         return fit
@@ -115,6 +114,18 @@ def _fit_shapes(problem: Problem, fit: Fit, load: bool, warm: bool
     return shapes(found.x), len(lo)
 
 
+def _shapes_of(problem: Problem, fit: Fit, effect: str) -> int:
+    """The shapes ``fit`` spends on a factor the law takes the place of: its parameters in
+    use (one held at a lower bound of 0 is not, as :func:`.fitting.fit_model` counts) and
+    the terms its refinements added (a temperature band's two, a speed term; the low-load
+    drag's viscosity exponent)."""
+    used = sum(1 for p in nonlinear_parameters(effect, problem.kind)
+               if not (p.lower == 0.0 and fit.theta[key_of(effect, p.name)] <= 1e-6 * p.upper))
+    if effect == "temperature_dependence":
+        return used + 2 * (problem.temperature_band is not None) + (problem.speed_loss != 0.0)
+    return used + (problem.drag_viscosity_exponent != 0.0)
+
+
 def _slope_bounds() -> tuple[float, float]:
     """The temperature dependence's bounds of the viscosity slope b [1/K]."""
     b = next(p for p in nonlinear_parameters("temperature_dependence", "efficiency")
@@ -133,8 +144,8 @@ def _hersey_text(hersey: tuple[float, float, float], load: bool, warm: bool) -> 
 def hersey_params(problem: Problem, fit: Fit, effect: str) -> dict[str, tuple[float, str]]:
     """The Stribeck law's figures for one of the effects it stands in for: the boundary
     scale, the effect's own shape (the pressure exponent for the low-load loss, the
-    viscosity slope for the temperature law) and, on the effect that carries them, the two
-    losses [% points at H = 1]."""
+    viscosity slope for the temperature law) and, on the effect that carries them, the
+    losses [% points]: the boundary loss as H → 0, the film losses at H = 1."""
     h_b, r, b = problem.hersey
     out = {"boundary_scale_H_b": (h_b, "-")}
     if effect == "low_load_efficiency":
@@ -142,6 +153,6 @@ def hersey_params(problem: Problem, fit: Fit, effect: str) -> dict[str, tuple[fl
     else:
         out["viscosity_slope_b"] = (b, "1/K")
     for (e, n), v in zip(fit.labels, fit.beta):
-        if e == effect and n in ("boundary_loss", "film_loss"):
+        if e == effect and n in laws.STRIBECK_LABELS:
             out[n] = (float(v), "%")
     return out
