@@ -63,19 +63,15 @@ class Problem:
     # ellipse series: 4× and 6× beside 2×), each with a constant amplitude: none while
     # effects are named, chosen by BIC once they are (te_forms.refine_te_overtones)
     te_overtones: tuple[int, ...] = ()
-    # transmission: a named error's periodic modulation, k → (f_m [cycles per WG
-    # revolution], j): sidebands at k ± f_m … k ± j·f_m beside it (its amplitude or phase
-    # varies every 1/f_m WG revolutions, faster than the slow Legendre form follows): none
-    # while effects are named, kept by BIC once they are (te_forms.refine_te_sidebands)
+    # transmission: a named error's periodic modulation k → (f_m [cycles per WG rev.], j):
+    # sidebands k ± f_m … k ± j·f_m (te_forms.refine_te_sidebands), none while naming
     te_sidebands: dict[int, tuple[float, int]] = field(default_factory=dict)
-    # hysteresis as a slip element in series with the gear (z_sat·(T/T_s − z)) instead of
-    # friction in parallel with it (−z_sat·z): the reading a hysteresis + spring pair is
-    # tested against
+    # hysteresis as a slip element in series with the gear (z_sat·(T/T_s − z)), not friction
+    # in parallel with it (−z_sat·z): the reading a hysteresis + spring pair is tested against
     hysteresis_series: bool = False
     scale_free: bool = False  # the compliance scale beyond the catalog's spread
     # hysteresis as a friction torque in parallel with the gear's spring, its twist the torque
-    # times the curve's local compliance (the loop narrows where the gear stiffens); the
-    # constant-compliance form names the effect, this one is tried once it is named
+    # times the curve's local compliance (narrower where the gear stiffens), tried once named
     hysteresis_through_gear: bool = False
     # hysteresis as a loop about the catalog curve (its centre line taken out: the catalog
     # curve is the mean of loading and unloading) instead of a loop with its own backbone
@@ -301,11 +297,15 @@ def fit_model(problem: Problem, effects: tuple[str, ...],
                         params, scale)
         if rss_of(again) < rss_of(theta):
             theta = again
-    # a shape held at a lower bound of 0 (a speed exponent of 0) is the simpler model's
-    # value, not a parameter in use
-    in_use = [k for k in keys if not (params[k].lower == 0.0 and theta[k] <= 1e-6 * scale[k]
-                                      * params[k].upper)]
-    return finish(problem, effects, theta, len(in_use))
+    return finish(problem, effects, theta, shapes_in_use(problem, effects, theta))
+
+
+def shapes_in_use(problem: Problem, effects: tuple[str, ...], theta: dict[str, float]) -> int:
+    """The shapes of ``effects`` in use at ``theta``: one held at a lower bound of 0 (a speed
+    exponent of 0) is the simpler model's value, not a parameter."""
+    params = nonlinear(problem.kind, effects)
+    return sum(1 for k, p in params.items()
+               if not (p.lower == 0.0 and theta[k] <= 1e-6 * problem.scales[p.scale] * p.upper))
 
 
 def best_setting(problem: Problem, fit: Fit, current, settings, apply) -> tuple[Fit, object]:

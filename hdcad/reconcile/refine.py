@@ -20,7 +20,7 @@ from scipy.optimize import minimize_scalar
 
 from . import efficiency_laws as laws
 from .baseline import COMPLIANCE_SCALE_BOUNDS, STIFFNESS_SPREAD
-from .fitting import Fit, Problem, best_setting, finish, fit_model
+from .fitting import Fit, Problem, best_setting, finish, fit_model, shapes_in_use
 from .frames import refine_frames
 from .gates import EXPLAINED_MIN, beyond, bic_best, effective_n
 from .joint_fit import refine_spring
@@ -349,4 +349,7 @@ def _one_more(problem: Problem, fit: Fit, attribute: str, bounds: tuple[float, f
         setattr(problem, attribute, 0.0)
         return fit
     problem.notes.append(note(found.x))
-    return replace(wider, n_params=wider.n_params + 1)
+    # the terms earlier refinements added to ``fit`` stay (the refit counts its shapes only)
+    earlier = (fit.n_params - int(np.count_nonzero(fit.beta))
+               - shapes_in_use(problem, fit.effects, fit.theta))
+    return replace(wider, n_params=wider.n_params + 1 + max(earlier, 0))
