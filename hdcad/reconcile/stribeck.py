@@ -31,7 +31,7 @@ from scipy.optimize import least_squares
 from . import efficiency_laws as laws
 from .bounded import solve
 from .effects import key_of, nonlinear_parameters
-from .fitting import POLISH_TOL, Fit, Problem, finish
+from .fitting import POLISH_TOL, Fit, Problem, finish, shapes_in_use
 from .gates import EXPLAINED_MIN, beyond, bic_choice
 from .model_columns import columns, stribeck_takes
 
@@ -44,9 +44,8 @@ _STARTS_R = (0.5, 1.0)
 _EVALUATIONS = 80
 TEXT = ("efficiency: a Stribeck law in Hersey's number H = {h} in place of {named}'s "
         "factors (boundary friction fading as exp(−H/{hb:.3g}), film shear ∝ √H and H), "
-        "fits "
-        "{closer:.2f}× closer (BIC): the loss follows {what} through the lubricant film's "
-        "one parameter")
+        "fits {closer:.2f}× closer (BIC): the loss follows {what} through the lubricant "
+        "film's one parameter")
 
 
 def refine_hersey(problem: Problem, fit: Fit) -> Fit:
@@ -107,7 +106,7 @@ def _fit_shapes(problem: Problem, fit: Fit, load: bool, warm: bool
     lo = [math.log(BOUNDARY_SCALE[0])] + [PRESSURE_EXPONENT[0]] * load + [b_lo] * warm
     hi = [math.log(BOUNDARY_SCALE[1])] + [PRESSURE_EXPONENT[1]] * load + [b_hi] * warm
     starts = [np.array([math.log(h)] + [r] * load + [b0] * warm)
-              for h, r in itertools.product(_STARTS_H, _STARTS_R)]
+              for h, r in itertools.product(_STARTS_H, _STARTS_R if load else (0.0,))]
     x0 = min(starts, key=lambda x: float(np.sum(residual(x) ** 2)))
     found = least_squares(residual, x0, bounds=(lo, hi), max_nfev=_EVALUATIONS,
                           diff_step=1e-3, ftol=POLISH_TOL, xtol=POLISH_TOL)
@@ -119,8 +118,8 @@ def _shapes_of(problem: Problem, fit: Fit, effect: str) -> int:
     use (one held at a lower bound of 0 is not, as :func:`.fitting.fit_model` counts) and
     the terms its refinements added (a temperature band's two, a speed term; the low-load
     drag's viscosity exponent)."""
-    used = sum(1 for p in nonlinear_parameters(effect, problem.kind)
-               if not (p.lower == 0.0 and fit.theta[key_of(effect, p.name)] <= 1e-6 * p.upper))
+    used = (shapes_in_use(problem, (effect,), fit.theta)
+            - shapes_in_use(problem, (), fit.theta))  # the baseline's nuisances are kept
     if effect == "temperature_dependence":
         return used + 2 * (problem.temperature_band is not None) + (problem.speed_loss != 0.0)
     return used + (problem.drag_viscosity_exponent != 0.0)
