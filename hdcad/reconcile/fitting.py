@@ -101,27 +101,22 @@ class Problem:
     # efficiency: a Stribeck law's shapes (H_b, r, b) in place of factors (stribeck.py), or None
     hersey: tuple[float, float, float] | None = None
     drag_viscosity_exponent: float = 0.0  # k of the low-load drag ∝ ν^k beside a temperature law
-    # the low-load factor's shape flat at rated torque (efficiency_laws.low_load_factor):
-    # False while effects are named, the better of the two once they are (refine)
+    # the low-load factor flat at rated torque (efficiency_laws.low_load_factor), once named
     low_load_flat: bool = False
     # knee torque T_k [N·m] of a housing spring that stiffens (spring_forms.progressive_twist):
     # ∞ (linear) while effects are named, fitted once they are (springs.stiffening)
     housing_knee: float = math.inf
-    # torque T_o [N·m] past which a linear housing spring's joint opens and softens: ∞ while
-    # effects are named, fitted once they are (springs.refine_opening)
+    # torque T_o [N·m] past which a housing spring's joint opens (springs.refine_opening)
     housing_opening: float = math.inf
     # torque that holds a play at one side until the load passes it, as a share of T0
-    # (effects.backlash_twist): 0 while effects are named, fitted once backlash is
-    # (refine.refine_play)
+    # (effects.backlash_twist): 0 while naming, fitted once backlash is (refine.refine_play)
     play_hold: float = 0.0
     # torque at which a play is crossed, as a share of T0 (a steady torque preloads one
-    # flank: a slider's weight on a horizontal axis): 0 while effects are named, fitted once
-    # backlash is (refine.refine_play)
+    # flank: a slider's weight), 0 while naming, fitted once backlash is (refine.refine_play)
     play_bias: float = 0.0
-    # a play's lost motion along the record: its Legendre order (a clearance that grows
-    # with wear or warmth) or the record position of one step in it (a play that depends on
-    # where the input was locked): 0 and None while effects are named, chosen by BIC once
-    # backlash is (refine.refine_play_drift)
+    # a play's lost motion along the record: its Legendre order (wear, warmth) or the
+    # position of one step in it (an input locked at another angle); 0 and None while
+    # effects are named, chosen by BIC once backlash is (refine.refine_play_drift)
     play_drift: int = 0
     play_step: float | None = None
     # the member each harmonic's error turns with (k → δ: its angle k·(1 + δ)·φ, φ the WG
@@ -171,6 +166,11 @@ class Fit:
     def residual(self, problem: Problem) -> np.ndarray:
         """Residual on the fit rows."""
         return problem.y - self.columns @ self.beta
+
+    @property
+    def shapes(self) -> int:
+        """The parameters counted besides the amplitudes in use: shapes and refinements' terms."""
+        return self.n_params - int(np.count_nonzero(self.beta))
 
     @property
     def cv_mse(self) -> float:

@@ -143,9 +143,14 @@ def _shapes_beside_loop(problem: Problem, fit: Fit) -> int:
     """The parameters of ``fit`` other than its amplitudes and its loop's shapes (the Bouc–Wen
     loop's five or the Preisach density's three): the other effects' shapes in use and the
     terms a refinement added (a play's holding torque)."""
-    loop = (3 if problem.hysteresis_preisach is not None
+    return fit.shapes - _parametric_loop_shapes(problem)
+
+
+def _parametric_loop_shapes(problem: Problem) -> int:
+    """The shapes of the problem's parametric loop: the Preisach density's three when it
+    holds one, else the Bouc–Wen loop's five."""
+    return (3 if problem.hysteresis_preisach is not None
             else len(fx.nonlinear_parameters("hysteresis", problem.kind)))
-    return fit.n_params - int(np.count_nonzero(fit.beta)) - loop
 
 
 def _replace_loop_notes(problem: Problem, text: str, form: tuple, fit: Fit, best: Fit,
@@ -236,13 +241,13 @@ def refine_creep(problem: Problem, fit: Fit) -> Fit:
     if (problem.kind != "torsion" or "hysteresis" not in fit.effects
             or problem.base.curve is None or problem.hysteresis_creep):
         return fit
-    in_use = fit.n_params - int(np.count_nonzero(fit.beta))
-    loop = (0 if problem.hysteresis_plays else 3 if problem.hysteresis_preisach is not None
-            else len(fx.nonlinear_parameters("hysteresis", problem.kind)))
+    # friction elements' weights are amplitudes: without the loop only a parametric loop's
+    # shapes go
+    loop = 0 if problem.hysteresis_plays else _parametric_loop_shapes(problem)
     trials = []
     for where, centred in _CREEP_FORMS:
         problem.hysteresis_creep, problem.creep_centred = where, centred
-        shapes = in_use - loop if where == "alone" else in_use
+        shapes = fit.shapes - loop if where == "alone" else fit.shapes
         trials.append((finish(problem, fit.effects, fit.theta, shapes), where, centred))
     best, where, centred = trials[bic_choice(problem, [t[0] for t in trials])]
     if not beyond(problem, fit, best, explained_min=EXPLAINED_MIN):

@@ -105,7 +105,7 @@ def columns(problem: Problem, effects: tuple[str, ...], theta: dict[str, float],
         elif name == "housing_compliance":
             add(name, ["compliance"], spring_forms.progressive_twist(inp["torque_Nm"],
                                                            problem.housing_knee), 0.0)
-            if problem.housing_opening < np.inf:  # the compliance the opened joint adds
+            if np.isfinite(problem.housing_opening):  # the compliance the opened joint adds
                 add(name, ["opening_compliance"],
                     spring_forms.opening_twist(inp["torque_Nm"], problem.housing_opening), 0.0)
         elif name in ("te_1x", "te_2x"):

@@ -188,7 +188,7 @@ def _drift_trials(problem: Problem, fit: Fit) -> dict[tuple[int, float | None], 
     """{(Legendre order, step position): fit with the shapes held} of a play's lost motion
     along the record, the forms whose lost motion stays ≥ 0 (a clearance); leaves the
     problem's form at none."""
-    shapes = fit.n_params - int(np.count_nonzero(fit.beta))
+    shapes = fit.shapes
     play = fit.columns[:, fit.labels.index(("backlash", "lost_motion"))]
     u = problem.base.inputs["record_position"][problem.rows]
     inner = np.abs(u) <= PLAY_STEP_SPAN
@@ -350,6 +350,5 @@ def _one_more(problem: Problem, fit: Fit, attribute: str, bounds: tuple[float, f
         return fit
     problem.notes.append(note(found.x))
     # the terms earlier refinements added to ``fit`` stay (the refit counts its shapes only)
-    earlier = (fit.n_params - int(np.count_nonzero(fit.beta))
-               - shapes_in_use(problem, fit.effects, fit.theta))
+    earlier = fit.shapes - shapes_in_use(problem, fit.effects, fit.theta)
     return replace(wider, n_params=wider.n_params + 1 + max(earlier, 0))

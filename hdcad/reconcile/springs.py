@@ -117,18 +117,27 @@ def _knee_fit(problem: Problem, effects: tuple[str, ...], theta: dict[str, float
     """The model with the housing spring's knee torque fitted, the knee counting as one
     more parameter; leaves the knee set on ``problem``. The knee is searched (bounded, on its
     logarithm) with the other shapes held at ``theta``, then all are fitted at that knee."""
-    t0 = problem.scales["T0"]
-
-    def held(log_knee: float) -> float:
-        problem.housing_knee = t0 * math.exp(log_knee)
-        return rss_at(problem, effects, theta)
-
-    lo, hi = (math.log(b) for b in KNEE_BOUNDS)
-    found = minimize_scalar(held, bounds=(lo, hi), method="bounded",
-                            options={"xatol": 0.05, "maxiter": 20})
-    problem.housing_knee = t0 * math.exp(found.x)
+    _search_torque(problem, "housing_knee", KNEE_BOUNDS, effects, theta, 0.05, 20)
     fit = fit_model(problem, effects, theta)
     return replace(fit, n_params=fit.n_params + 1)
+
+
+def _search_torque(problem: Problem, attribute: str, shares: tuple[float, float],
+                   effects: tuple[str, ...], theta: dict[str, float], xatol: float,
+                   maxiter: int) -> None:
+    """Set the spring's torque ``problem.attribute`` [N·m] to the one within ``shares`` of T0
+    that leaves the least residual with the shapes held at ``theta`` (bounded search on its
+    logarithm, to ``xatol`` in it)."""
+    t0 = problem.scales["T0"]
+
+    def held(log_share: float) -> float:
+        setattr(problem, attribute, t0 * math.exp(log_share))
+        return rss_at(problem, effects, theta)
+
+    lo, hi = (math.log(b) for b in shares)
+    found = minimize_scalar(held, bounds=(lo, hi), method="bounded",
+                            options={"xatol": xatol, "maxiter": maxiter})
+    setattr(problem, attribute, t0 * math.exp(found.x))
 
 
 # T_o / T0 of a joint that opens: below a tenth of the test's torque the opened joint's
@@ -151,27 +160,18 @@ def refine_opening(problem: Problem, fit: Fit) -> Fit:
     if (problem.kind != "torsion" or "housing_compliance" not in fit.effects
             or math.isfinite(problem.housing_knee) or math.isfinite(problem.housing_opening)):
         return fit
-    t0 = problem.scales["T0"]
-
-    def held(log_share: float) -> float:
-        problem.housing_opening = t0 * math.exp(log_share)
-        return rss_at(problem, fit.effects, fit.theta)
-
-    lo, hi = (math.log(b) for b in OPENING_BOUNDS)
-    found = minimize_scalar(held, bounds=(lo, hi), method="bounded",
-                            options={"xatol": 0.02, "maxiter": 30})
-    problem.housing_opening = t0 * math.exp(found.x)
+    _search_torque(problem, "housing_opening", OPENING_BOUNDS, fit.effects, fit.theta, 0.02, 30)
     opened = fit_model(problem, fit.effects, fit.theta)
     # the shapes in use as ``fit`` counts them (its loop's form, its refinements' terms),
     # the opened joint's compliance if it is used, and T_o
-    opened = replace(opened, n_params=fit.n_params - int(np.count_nonzero(fit.beta))
-                     + int(np.count_nonzero(opened.beta)) + 1)
+    opened = replace(opened, n_params=fit.shapes + int(np.count_nonzero(opened.beta)) + 1)
     if not beyond(problem, fit, opened, explained_min=EXPLAINED_MIN):
         problem.housing_opening = math.inf
         return fit
     b = {n: v for (e, n), v in zip(opened.labels, opened.beta) if e == "housing_compliance"}
     problem.notes.append(OPENING.format(
-        t=problem.housing_opening, share=problem.housing_opening / t0, c1=b["compliance"],
+        t=problem.housing_opening, share=problem.housing_opening / problem.scales["T0"],
+        c1=b["compliance"],
         c2=b["compliance"] + b.get("opening_compliance", 0.0),
         closer=math.sqrt(fit.rss / opened.rss)))
     return opened

@@ -56,14 +56,13 @@ def refine_hersey(problem: Problem, fit: Fit) -> Fit:
     named = [e for e in fit.effects if e in laws.HERSEY_EFFECTS]
     if problem.kind != "efficiency" or not named or problem.hersey is not None:
         return fit
-    in_use = fit.n_params - int(np.count_nonzero(fit.beta))
     trials = []
     for form in _forms(named):
         x, count = _fit_shapes(problem, fit, *form)
         problem.hersey = x
         replaced = sum(_shapes_of(problem, fit, e) for e in named if stribeck_takes(problem, e))
         trials.append((finish(problem, fit.effects, fit.theta,
-                              max(in_use - replaced, 0) + count), x, form))
+                              max(fit.shapes - replaced, 0) + count), x, form))
     best, problem.hersey, (load, warm) = trials[bic_choice(problem, [t[0] for t in trials])]
     if not beyond(problem, fit, best, explained_min=EXPLAINED_MIN):
         problem.hersey = None
