@@ -32,7 +32,7 @@ from . import search
 from . import units
 from .data import validate_data
 from .fitting import Fit, Problem, fit_model, make_problem, set_rows
-from .gates import bic_gain, effective_n
+from .gates import BIC_MIN, bic_gain, effective_n
 from .noise import correlation_time, noise_rms
 from .params import effect_form, effect_params, output_gain_entry, rig_entry
 
@@ -156,7 +156,7 @@ def reconcile(kind: str, data: dict, model: GearModel, catalog: Catalog,
     unselected = _copy(problem)  # the selection sets the named forms on the problem
     best, candidates = search.select_gear(problem, with_rig, singles)
     problem, with_rig, best, candidates = _gear_twin_instead(
-        problem, unselected, with_rig, best, candidates)
+        problem, unselected, with_rig, best, candidates, _held_for_twin(rig_table))
     final = search.recheck_rig(problem, best.fit if best else with_rig)
     final = refine.refine(problem, _without_outliers(problem, final))
     keep = np.ones(len(base.y), bool)
@@ -196,29 +196,45 @@ def _copy(problem: Problem) -> Problem:
 
 
 def _gear_twin_instead(problem: Problem, unselected: Problem, with_rig: Fit, best,
-                       candidates):
-    """The gear effects selected again (on ``unselected``, the problem as it was before
-    the selection) without a measurement effect that a gear effect reads nearly as (a
-    torque channel's gain takes the extra twist of a series spring), kept when they fit
-    better: the measurement effect was preferred to each gear effect alone, and two gear
-    effects together may explain what it took. Returns (problem, rig fit, best,
-    candidates) of the reading kept."""
+                       candidates, held: tuple[str, ...]):
+    """The gear effects selected again (on ``unselected``, the problem as it was before the
+    selection) without a measurement effect that a gear effect reads nearly as (a torque
+    channel's gain takes the extra twist of a series spring), kept when they fit better:
+    the measurement effect was preferred to each gear effect alone, and two gear effects
+    together may explain what it took. The other way round for one ``held`` back because
+    its gear twin alone read about the same (a warm-up's drift with time and the
+    efficiency's temperature dependence): selected again with it, kept when that fits
+    better by ``BIC_MIN`` (the twin may leave a part of the change the drift takes up).
+    Returns (problem, rig fit, best, candidates) of the reading kept."""
     twins = [e for e in with_rig.effects if (problem.kind, e) in search.GEAR_TWIN]
-    if not twins:
+    if twins:
+        other = tuple(e for e in with_rig.effects if e not in twins)
+    elif held:
+        other = with_rig.effects + held
+    else:
         return problem, with_rig, best, candidates
-    without = fit_model(unselected, tuple(e for e in with_rig.effects if e not in twins),
-                        with_rig.theta)
-    alt_best, alt_candidates = search.select_gear(unselected, without)
-    if alt_best is None:
+    start = fit_model(unselected, other, with_rig.theta)
+    alt_best, alt_candidates = search.select_gear(unselected, start)
+    if alt_best is None and twins:
         return problem, with_rig, best, candidates
     kept = best.fit if best else with_rig
-    n_eff = effective_n(problem, kept.residual(problem))
-    gain = bic_gain(kept, alt_best.fit, n_eff)
-    if gain <= 0:
+    gain = bic_gain(kept, alt_best.fit if alt_best else start,
+                    effective_n(problem, kept.residual(problem)))
+    if gain <= (0.0 if twins else BIC_MIN):
         return problem, with_rig, best, candidates
-    unselected.notes.append(f"{' and '.join(twins)} set aside: without it, "
-                            f"{' + '.join(alt_best.effects)} fit better (ΔBIC {gain:.1f})")
-    return unselected, without, alt_best, alt_candidates
+    unselected.notes.append(
+        f"{' and '.join(twins)} set aside: without it, {' + '.join(alt_best.effects)} fit "
+        f"better (ΔBIC {gain:.1f})" if twins else
+        f"{' and '.join(held)} added after all: with it, the model fits better (ΔBIC "
+        f"{gain:.1f}) than with the gear effects alone")
+    return unselected, start, alt_best, alt_candidates
+
+
+def _held_for_twin(table: list[list[dict]]) -> tuple[str, ...]:
+    """The measurement effects of the rig search's last round held back only for their gear
+    twin (each passed, but did not beat the twin alone by ``BIC_MIN``)."""
+    return tuple(row["effect"] for row in (table[-1] if table else ())
+                 if row.get("held_for_twin"))
 
 
 def _rmse_beside(problem: Problem, final: Fit, rivals: tuple[str, ...], keep
@@ -254,12 +270,14 @@ def _steps(problem, named, candidates, final, keep) -> list[Step]:
 def _candidate_rows(candidates, rig_table, named, rig_kept) -> list[list[dict]]:
     """The rounds of the search as the report lists them: each round's measurement effects
     (the one the round added is ``set_aside`` when the final model does not keep it,
-    ``rig_kept`` its measurement effects), then the gear candidates."""
+    ``rig_kept`` its measurement effects; one held back for its gear twin and added after
+    the gear effects is accepted), then the gear candidates."""
     gear = [{"effect": "+".join(c.effects), "delta_bic": c.gate.delta_bic,
              "cv_gain": c.gate.cv_gain, "explained_var_over_noise": c.gate.explained,
              "accepted": c.effects == tuple(named), "passes": c.passes, "reason": c.reason}
             for c in candidates]
-    rounds = [[dict(r, accepted=r.get("added", False) and r["effect"] in rig_kept,
+    rounds = [[dict(r, accepted=(r.get("added", False) or r.get("held_for_twin", False))
+                    and r["effect"] in rig_kept,
                     set_aside=r.get("added", False) and r["effect"] not in rig_kept)
                for r in round_] for round_ in rig_table]
     return rounds + [gear]
