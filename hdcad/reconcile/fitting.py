@@ -80,16 +80,17 @@ class Problem:
     # slip torque [N·m], its log-spread [-], spread of the relays' centres [N·m]) instead of
     # the Bouc–Wen loop; tried once the effect is named (loops.refine_preisach)
     hysteresis_preisach: tuple[float, float, float] | None = None
-    # hysteresis as a sum of friction elements with fixed slip torques, weighted freely
-    # (plays: an Iwan model) instead of the Bouc–Wen loop; tried last (loops.refine_plays)
+    # hysteresis as friction elements with fixed slip torques, weighted freely (plays: an
+    # Iwan model) instead of the Bouc–Wen loop (loops.refine_plays); their slip torques
+    # grow by this share of the torque carried (flank friction: flank_friction.py)
     hysteresis_plays: bool = False
+    plays_load_share: float = 0.0
     # hysteresis as creep elements (creep.py): "alone" in place of the friction loop, "beside"
     # it, or None; their centre lines taken out (creep_centred) or not (loops.refine_creep)
     hysteresis_creep: str | None = None
     creep_centred: bool = False
     # constant C [°C] of the viscosity–temperature law (efficiency_laws.VISCOSITY_LAWS_C):
-    # Reynolds' while effects are named, the law that fits best once they are
-    # (refine.refine_viscosity)
+    # Reynolds' while effects are named, the best once they are (refine.refine_viscosity)
     viscosity_C: float = math.inf
     # (centre [°C], width [K]) of a band of temperature over which the loss changes
     # (efficiency_laws.band_ratio) in place of the viscosity law: None while effects are
@@ -126,8 +127,7 @@ class Problem:
     te_second_frames: dict[int, float] = field(default_factory=dict)
     # vibration: the joint's response as the steady state at each instant's frequency through
     # a spring with structural damping (joint.steady_response) instead of the viscous joint's
-    # run-up with its free vibration: the latter while effects are named, the better of the
-    # two once they are (refine.refine_damping)
+    # run-up: the latter while effects are named, the better once they are (refine_damping)
     steady_state: bool = False
     cache: dict = field(default_factory=dict)
     _plane: preisach.PreisachPlane | None = field(default=None, repr=False)

@@ -158,7 +158,7 @@ def _replace_loop_notes(problem: Problem, text: str, form: tuple, fit: Fit, best
     """Note the loop's new form ``text`` in ``form`` and how much closer ``best`` fits than
     ``fit``; the earlier form's notes describe a loop no longer in the model."""
     earlier = (f"{CENTRED} fits", f"{THROUGH_GEAR} fits", PREISACH.split("(")[0],
-               PLAYS.split("{")[0])
+               PLAYS.split("{")[0], FLANK.split("(")[0])
     problem.notes[:] = [n for n in problem.notes if not n.startswith(earlier)
                         and _SERIES_PLAYS_MARK not in n]
     problem.notes.append(text + (", about the catalog curve" if form[0] else "")
@@ -173,6 +173,9 @@ SERIES_PLAYS = ("hysteresis: {k} friction elements in series with the gear (slip
                 "{lo:.3g} … {hi:.3g} N·m, weights fitted): past its slip torques the loop "
                 "adds a compliance of its own")
 _SERIES_PLAYS_MARK = " friction elements in series with the gear (slip torques"
+FLANK = ("hysteresis: friction elements whose slip torques grow with the torque carried ({k} "
+         "elements, r_k + {mu:g}·|T|, r_k {lo:.3g} … {hi:.3g} N·m, weights fitted: friction on "
+         "flanks the load presses together, a loop that widens with the torque)")
 SERIES_CLOSE = ("housing_compliance beside the loop: friction elements in series with the "
                 "gear, without the spring, read almost the same (the spring's ΔBIC over them "
                 "{gain:.1f}, under the {limit:g} an effect is named at); check the housing's "

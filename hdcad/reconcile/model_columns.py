@@ -222,14 +222,16 @@ def _through_gear(problem: Problem, torque: np.ndarray, theta: dict) -> np.ndarr
 
 
 def _stop_states(problem: Problem, torque: np.ndarray, branches, rows) -> np.ndarray:
-    """The friction elements' states s/r (n × K) on the rows (:mod:`.plays`), less their
+    """The friction elements' states s/R (n × K) on the rows (:mod:`.plays`, their slip
+    torques growing with the torque carried by ``problem.plays_load_share``), less their
     centre lines when the loop is drawn about the catalog curve; kept until set_rows."""
-    key = ("plays", isinstance(rows, slice), problem.hysteresis_centred)
+    mu, t0 = problem.plays_load_share, problem.scales["T0"]
+    key = ("plays", isinstance(rows, slice), problem.hysteresis_centred, mu)
     if key not in problem.cache:
-        r = plays.thresholds(problem.scales["T0"])
-        S = plays.stop_states(torque, r, branches)
+        r = plays.thresholds(t0)
+        S = plays.stop_states(torque, r, branches, mu, t0)
         if problem.hysteresis_centred:
-            S = S - plays.centre_lines(torque, r, problem.scales["T0"])
+            S = S - plays.centre_lines(torque, r, t0, mu)
         problem.cache[key] = S
     return problem.cache[key]
 

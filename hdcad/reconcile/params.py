@@ -114,6 +114,10 @@ PREISACH_FORM = ("θ = θ_catalog(T) + z_sat·f(T history)  (Preisach relay sum:
 PLAYS_FORM = ("θ = θ_catalog(T) − Σ a_k·s_k(T history)/r_k, a_k ≥ 0  (friction elements "
               "with slip torques r_k: stop operators, s_k = T − p_k with the play p_k kept "
               "within r_k of T; Iwan 1966)")
+FLANK_FORM = ("θ = θ_catalog(T) − Σ a_k·s_k(T history)/(r_k + μ·T0), a_k ≥ 0  (friction "
+              "elements whose slip torques grow with the torque carried: s_k = T − p_k with "
+              "the play p_k kept within r_k + μ·|T| of T; flank friction, Tuttle & Seering "
+              "1996)")
 SERIES_PLAYS_FORM = ("θ = θ_catalog(T) + Σ a_k·p_k(T history)/r_k, a_k ≥ 0  (friction "
                      "elements in series with the gear: play operators p_k kept within the "
                      "slip torque r_k of T, each adding its slip past r_k; Prandtl–Ishlinskii, "
@@ -127,8 +131,11 @@ def _plays(problem: Problem, b: dict[str, float]) -> dict[str, tuple[float, str]
     r = plays.thresholds(t0)
     # in series, the elements that slip below plays.SERIES_MIN_SHARE·T0 have no column
     a = np.array([b.get(f"a_{k}", 0.0) for k in range(len(r))])
+    mu = problem.plays_load_share
     out = {"z_sat": (float(a.sum()), "rad"), "T0": (t0, "N·m"),
-           "loss_at_T0": (plays.loss_at_zero(a, r, t0), "rad")}
+           "loss_at_T0": (plays.loss_at_zero(a, r, t0, mu), "rad")}
+    if mu:  # each slip torque grows by μ·|T|
+        out["load_share"] = (mu, "-")
     if problem.hysteresis_series:  # the compliance it adds once every element slips
         out["slip_compliance"] = (float(np.sum(a / r)), "rad/(N·m)")
     for k in np.flatnonzero(a):
@@ -178,7 +185,8 @@ def effect_form(problem: Problem, effect: str) -> str:
 def _loop_form(problem: Problem) -> str:
     """The formula of the friction loop as the final model has it."""
     if problem.hysteresis_plays:
-        return SERIES_PLAYS_FORM if problem.hysteresis_series else PLAYS_FORM
+        return (SERIES_PLAYS_FORM if problem.hysteresis_series
+                else FLANK_FORM if problem.plays_load_share else PLAYS_FORM)
     if problem.hysteresis_preisach is not None:
         return PREISACH_FORM
     return fx.EFFECTS["hysteresis"].form

@@ -52,15 +52,21 @@ def series_first() -> int:
 
 
 def stop_states(torque_Nm: np.ndarray, r_Nm: np.ndarray,
-                branches: tuple[np.ndarray, int]) -> np.ndarray:
-    """s_k/r_k (n × K, each in −1 … 1) of stop operators with thresholds ``r_Nm`` along the
+                branches: tuple[np.ndarray, int], load_share: float = 0.0,
+                T0: float = 0.0) -> np.ndarray:
+    """s_k/R_k (n × K, each in −1 … 1) of stop operators with thresholds ``r_Nm`` along the
     torque history, from rest.
 
     ``branches`` = (turning-point rows, first direction), as for the Bouc–Wen loop: within a
     branch the torque is taken at its running extreme in the branch's direction (noise in
-    the torque makes no minor loops)."""
+    the torque makes no minor loops). With a ``load_share`` μ > 0 each threshold grows with
+    the torque carried, r_k + μ·|T| (Coulomb friction on flanks that the transmitted torque
+    presses together), and R_k = r_k + μ·``T0`` [N·m], the threshold at the test's largest
+    torque; else R_k = r_k. T − r − μ|T| rises with T for μ < 1, so a branch's play is still
+    the running extreme of it."""
     torque = np.asarray(torque_Nm, dtype=float)
     r = np.asarray(r_Nm, dtype=float)
+    reach = r + load_share * T0
     starts, direction = branches  # the first branch starts at row 0
     bounds = list(starts) + [len(torque)]
     out = np.empty((len(torque), len(r)))
@@ -68,30 +74,37 @@ def stop_states(torque_Nm: np.ndarray, r_Nm: np.ndarray,
     for s, e in zip(bounds[:-1], bounds[1:]):
         seg = torque[s:e + 1]  # to the next turning point, where this branch ends
         reached = seg[0] + direction * np.maximum.accumulate(direction * (seg - seg[0]))
+        slip = r + load_share * np.abs(reached)[:, None]
         if direction > 0:
-            p = np.maximum(play, reached[:, None] - r)
+            p = np.maximum(play, reached[:, None] - slip)
         else:
-            p = np.minimum(play, reached[:, None] + r)
-        out[s:e] = ((reached[:, None] - p) / r)[:e - s]
+            p = np.minimum(play, reached[:, None] + slip)
+        out[s:e] = ((reached[:, None] - p) / reach)[:e - s]
         play = p[-1]
         direction = -direction
     return out
 
 
-def centre_lines(torque_Nm: np.ndarray, r_Nm: np.ndarray, T0: float) -> np.ndarray:
+def centre_lines(torque_Nm: np.ndarray, r_Nm: np.ndarray, T0: float,
+                 load_share: float = 0.0) -> np.ndarray:
     """Centre line (mean of loading and unloading) of each element's steady loop between
-    ±T0 [N·m], in units of s/r (n × K): the backbone the loop adds besides its width."""
+    ±T0 [N·m], in units of s/R (n × K, :func:`stop_states`): the backbone the loop adds
+    besides its width."""
     t = np.asarray(torque_Nm, dtype=float)[:, None]
     r = np.asarray(r_Nm, dtype=float)
-    up = np.minimum(t + T0 - r, r)      # loading from −T0, where s = −r
-    down = np.maximum(t - T0 + r, -r)   # unloading from +T0, where s = +r
-    return 0.5 * (up + down) / r
+    reach = r + load_share * T0
+    slip = r + load_share * np.abs(t)
+    up = np.minimum(t + T0 - reach, slip)      # loading from −T0, where s = −R
+    down = np.maximum(t - T0 + reach, -slip)   # unloading from +T0, where s = +R
+    return 0.5 * (up + down) / reach
 
 
-def loss_at_zero(weights_rad: np.ndarray, r_Nm: np.ndarray, T0: float) -> float:
+def loss_at_zero(weights_rad: np.ndarray, r_Nm: np.ndarray, T0: float,
+                 load_share: float = 0.0) -> float:
     """The loop's width in twist at zero torque [rad] between ±T0 [N·m]: the catalog's
-    hysteresis loss (seed 000 p.020). An element that slips (2r ≤ 2T0) adds 2·min(r, T0 −
-    r)/r of its weight."""
+    hysteresis loss (seed 000 p.020). An element that slips (2R ≤ 2T0, R = r + μ·T0) adds
+    2·min(r, T0 − R)/R of its weight."""
     r = np.asarray(r_Nm, dtype=float)
-    share = 2.0 * np.clip(np.minimum(r, T0 - r), 0.0, None) / r
+    reach = r + load_share * T0
+    share = 2.0 * np.clip(np.minimum(r, T0 - reach), 0.0, None) / reach
     return float(np.sum(np.asarray(weights_rad, dtype=float) * share))
