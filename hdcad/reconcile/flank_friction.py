@@ -36,13 +36,17 @@ from .loops import FLANK, _parametric_loop_shapes, _replace_loop_notes, _set_pla
 # flanks' normal load to the tangential, from a loop that barely widens to one that is nearly
 # all the load's (μ < 1: past that the friction would hold any torque)
 LOAD_SHARES = (0.01, 0.02, 0.05, 0.1, 0.2, 0.4, 0.6, 0.8)
+# the share at which the loop's form is chosen (11 fits in place of 32, the same choices on
+# suites B–L)
+FORM_SHARE = 0.1
 
 def refine_flank_friction(problem: Problem, fit: Fit) -> Fit:
     """A named hysteresis as friction elements whose slip torques grow with the torque
-    carried (:data:`LOAD_SHARES`), in place of the loop found so far, in the parallel
-    loop's four forms; the share and form that fit best, kept when they lower the BIC by more
-    than ``BIC_MIN`` and explain ``EXPLAINED_MIN`` noise variances more
-    (:func:`.gates.beyond`). Leaves ``problem.plays_load_share`` set when kept."""
+    carried (:data:`LOAD_SHARES`), in place of the loop found so far, in whichever of the
+    parallel loop's four forms fits best at ``FORM_SHARE``; the share that fits best in it,
+    kept when it lowers the BIC by more than ``BIC_MIN`` and explains ``EXPLAINED_MIN``
+    noise variances more (:func:`.gates.beyond`). Leaves ``problem.plays_load_share`` set
+    when kept."""
     if (problem.kind != "torsion" or "hysteresis" not in fit.effects
             or problem.base.curve is None or problem.branches is None
             or problem.hysteresis_series or problem.hysteresis_creep):
@@ -52,12 +56,16 @@ def refine_flank_friction(problem: Problem, fit: Fit) -> Fit:
     # the weights are amplitudes: a parametric loop's shapes go, the share comes
     shapes = fit.shapes - (0 if problem.hysteresis_plays else _parametric_loop_shapes(problem))
     problem.hysteresis_preisach, problem.hysteresis_plays = None, True
-    trials = []
-    for mu, form in itertools.product(LOAD_SHARES, itertools.product((False, True), repeat=2)):
+
+    def trial(mu: float, form: tuple) -> tuple[Fit, float, tuple]:
         problem.plays_load_share = mu
         _set_plays_form(problem, form)
-        trials.append((finish(problem, fit.effects, fit.theta, shapes + 1), mu, form))
-    best, mu, form = min(trials, key=lambda t: t[0].rss)
+        return finish(problem, fit.effects, fit.theta, shapes + 1), mu, form
+
+    # the form at a middle share, then the share in that form
+    _, _, form = min((trial(FORM_SHARE, f) for f in itertools.product((False, True), repeat=2)),
+                     key=lambda t: t[0].rss)
+    best, mu, form = min((trial(mu, form) for mu in LOAD_SHARES), key=lambda t: t[0].rss)
     if not beyond(problem, fit, best, explained_min=EXPLAINED_MIN):
         (problem.hysteresis_centred, problem.hysteresis_through_gear,
          problem.hysteresis_preisach, problem.hysteresis_plays) = named
