@@ -81,10 +81,11 @@ class Problem:
     # the Bouc–Wen loop; tried once the effect is named (loops.refine_preisach)
     hysteresis_preisach: tuple[float, float, float] | None = None
     # hysteresis as friction elements with fixed slip torques, weighted freely (plays: an
-    # Iwan model) instead of the Bouc–Wen loop (loops.refine_plays); their slip torques
-    # grow by this share of the torque carried (flank friction: flank_friction.py)
+    # Iwan model) instead of the Bouc–Wen loop (loops.refine_plays), their slip torques grown
+    # by a share of the torque carried; or as a Duhem loop (λ, p) (widening_loops.py)
     hysteresis_plays: bool = False
     plays_load_share: float = 0.0
+    hysteresis_duhem: tuple[float, float] | None = None
     # hysteresis as creep elements (creep.py): "alone" in place of the friction loop, "beside"
     # it, or None; their centre lines taken out (creep_centred) or not (loops.refine_creep)
     hysteresis_creep: str | None = None
@@ -115,9 +116,8 @@ class Problem:
     # torque at which a play is crossed, as a share of T0 (a steady torque preloads one
     # flank: a slider's weight), 0 while naming, fitted once backlash is (refine.refine_play)
     play_bias: float = 0.0
-    # a play's lost motion along the record: its Legendre order (wear, warmth) or the
-    # position of one step in it (an input locked at another angle); 0 and None while
-    # effects are named, chosen by BIC once backlash is (refine.refine_play_drift)
+    # a play's lost motion along the record: its Legendre order (wear, warmth) or one step's
+    # position (an input locked at another angle), by BIC once named (refine_play_drift)
     play_drift: int = 0
     play_step: float | None = None
     # the member each harmonic's error turns with (k → δ: its angle k·(1 + δ)·φ, φ the WG

@@ -147,8 +147,10 @@ def _shapes_beside_loop(problem: Problem, fit: Fit) -> int:
 
 
 def _parametric_loop_shapes(problem: Problem) -> int:
-    """The shapes of the problem's parametric loop: the Preisach density's three when it
-    holds one, else the Bouc–Wen loop's five."""
+    """The shapes of the problem's parametric loop: the Duhem loop's two (rate, power) or
+    the Preisach density's three when it holds one, else the Bouc–Wen loop's five."""
+    if problem.hysteresis_duhem is not None:
+        return 2
     return (3 if problem.hysteresis_preisach is not None
             else len(fx.nonlinear_parameters("hysteresis", problem.kind)))
 
@@ -158,7 +160,7 @@ def _replace_loop_notes(problem: Problem, text: str, form: tuple, fit: Fit, best
     """Note the loop's new form ``text`` in ``form`` and how much closer ``best`` fits than
     ``fit``; the earlier form's notes describe a loop no longer in the model."""
     earlier = (f"{CENTRED} fits", f"{THROUGH_GEAR} fits", PREISACH.split("(")[0],
-               PLAYS.split("{")[0], FLANK.split("(")[0])
+               PLAYS.split("{")[0], FLANK.split("(")[0], DUHEM.split("(")[0])
     problem.notes[:] = [n for n in problem.notes if not n.startswith(earlier)
                         and _SERIES_PLAYS_MARK not in n]
     problem.notes.append(text + (", about the catalog curve" if form[0] else "")
@@ -173,6 +175,9 @@ SERIES_PLAYS = ("hysteresis: {k} friction elements in series with the gear (slip
                 "{lo:.3g} … {hi:.3g} N·m, weights fitted): past its slip torques the loop "
                 "adds a compliance of its own")
 _SERIES_PLAYS_MARK = " friction elements in series with the gear (slip torques"
+DUHEM = ("hysteresis: a Duhem loop whose height follows the last excursion (relaxation "
+         "rate {rate:.3g} per T0, height ∝ amplitude^{power:.2f}: a loss that grows with the "
+         "amplitude, Dhaouadi, Ghorbel & Gandhi 2003)")
 FLANK = ("hysteresis: friction elements whose slip torques grow with the torque carried ({k} "
          "elements, r_k + {mu:g}·|T|, r_k {lo:.3g} … {hi:.3g} N·m, weights fitted: friction on "
          "flanks the load presses together, a loop that widens with the torque)")

@@ -18,7 +18,7 @@ import numpy as np
 from . import baseline as baselines
 from . import efficiency_laws as laws
 from . import effects as fx
-from . import creep, plays, rig, spring_forms
+from . import creep, duhem, plays, rig, spring_forms
 from .effects import key_of
 from .harmonics import (harmonic, legendre, overtones_of, sideband_labels, sidebands,
                         te_column_labels, te_order_of)
@@ -141,6 +141,11 @@ def _loop_columns(problem: Problem, inp: dict, th: dict, theta: dict, branches, 
     """Labels and columns of the friction loop: a sum of friction elements (in parallel with
     the gear or in series with it) or one Bouc–Wen or Preisach loop."""
     torque = inp["torque_Nm"]
+    if problem.hysteresis_duhem is not None:  # w falls below 0 on loading: the twist lags
+        w = duhem.states(torque, branches, problem.scales["T0"], *problem.hysteresis_duhem)
+        if problem.hysteresis_through_gear:
+            w = w * _through_gear(problem, torque, theta)
+        return ["z_sat"], w
     if problem.hysteresis_plays:
         S = _stop_states(problem, torque, branches, rows)
         first = 0

@@ -6,7 +6,7 @@ import math
 
 import numpy as np
 
-from . import creep, plays, spring_forms
+from . import creep, duhem, plays, spring_forms
 from . import efficiency_laws as laws
 from . import effects as fx
 from .effects import key_of
@@ -118,6 +118,10 @@ FLANK_FORM = ("θ = θ_catalog(T) − Σ a_k·s_k(T history)/(r_k + μ·T0), a_k
               "elements whose slip torques grow with the torque carried: s_k = T − p_k with "
               "the play p_k kept within r_k + μ·|T| of T; flank friction, Tuttle & Seering "
               "1996)")
+DUHEM_FORM = ("θ = θ_catalog(T) + z_sat·w(T history), dw/d|u| = λ·(−d·h − w), h = (A/T0)^p, "
+              "u = T/T0, d the branch's direction, A half the last branch's excursion  (a "
+              "Duhem loop whose height follows the last excursion; Dhaouadi, Ghorbel & "
+              "Gandhi 2003)")
 SERIES_PLAYS_FORM = ("θ = θ_catalog(T) + Σ a_k·p_k(T history)/r_k, a_k ≥ 0  (friction "
                      "elements in series with the gear: play operators p_k kept within the "
                      "slip torque r_k of T, each adding its slip past r_k; Prandtl–Ishlinskii, "
@@ -184,6 +188,8 @@ def effect_form(problem: Problem, effect: str) -> str:
 
 def _loop_form(problem: Problem) -> str:
     """The formula of the friction loop as the final model has it."""
+    if problem.hysteresis_duhem is not None:
+        return DUHEM_FORM
     if problem.hysteresis_plays:
         return (SERIES_PLAYS_FORM if problem.hysteresis_series
                 else FLANK_FORM if problem.plays_load_share else PLAYS_FORM)
@@ -202,6 +208,11 @@ def effect_params(problem: Problem, fit: Fit, effect: str) -> dict[str, dict]:
         out = {"T0": (problem.scales["T0"], "N·m")}
     elif effect == "hysteresis" and problem.hysteresis_plays:
         out = _plays(problem, b)
+    elif effect == "hysteresis" and problem.hysteresis_duhem is not None:
+        rate, power = problem.hysteresis_duhem
+        out = {"z_sat": (b["z_sat"], "rad"), "relaxation_rate": (rate, "1/T0"),
+               "height_power": (power, "-"), "T0": (problem.scales["T0"], "N·m"),
+               "loss_at_T0": (duhem.loss_at_zero(b["z_sat"], rate, power), "rad")}
     elif effect == "hysteresis" and problem.hysteresis_preisach is not None:
         w, spread, c = problem.hysteresis_preisach
         out = {"z_sat": (b["z_sat"], "rad"), "slip_torque_median": (w, "N·m"),

@@ -21,7 +21,7 @@ from scipy.optimize import minimize_scalar
 from . import efficiency_laws as laws
 from .baseline import COMPLIANCE_SCALE_BOUNDS, STIFFNESS_SPREAD
 from .fitting import Fit, Problem, best_setting, finish, fit_model, shapes_in_use
-from .flank_friction import refine_flank_friction
+from .widening_loops import refine_duhem, refine_flank_friction
 from .frames import refine_frames
 from .gates import EXPLAINED_MIN, beyond, bic_best, effective_n
 from .joint_fit import refine_spring
@@ -71,7 +71,7 @@ def refine(problem: Problem, fit: Fit) -> Fit:
         problem, refine_te_order(problem, fit))))
     fit = refine_play_drift(problem, refine_play(problem, fit))
     fit = refine_plays(problem, refine_preisach(problem, fit))
-    fit = refine_creep(problem, refine_flank_friction(problem, fit))
+    fit = refine_creep(problem, refine_duhem(problem, refine_flank_friction(problem, fit)))
     return refine_stiffness(problem, refine_opening(problem, refine_hersey(problem, fit)))
 
 
