@@ -259,6 +259,12 @@ def test_the_report_says_which_measurement_effect_was_added_and_which_set_aside(
               {"effect": "sensor_play", "delta_bic": -6.8, "passes": False, "added": False}]
     kept, dropped = (_candidate_rows([], [round_], [], rig)[0] for rig in
                      ({"sensor_gain"}, set()))
+    # a drift held back for its gear twin in the last round and kept later is accepted; held
+    # in an earlier round, it is the round that added it that says so
+    held = [{"effect": "thermal_drift", "delta_bic": 30.0, "passes": False, "added": False,
+             "held_for_twin": True}]
+    assert [r[0]["accepted"] for r in _candidate_rows([], [held, held], [], {"thermal_drift"})
+            [:2]] == [False, True]
     assert [(r["accepted"], r["set_aside"]) for r in kept] == [(True, False), (False, False),
                                                                (False, False)]
     assert [(r["accepted"], r["set_aside"]) for r in dropped] == [(False, True),

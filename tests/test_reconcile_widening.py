@@ -67,7 +67,7 @@ def test_the_centre_line_and_loss_are_the_steady_loop_s(mu):
     """After a first cycle the loop between ±T0 is steady: its centre line (mean of the
     loading and unloading branches at the same torque) and its width at zero torque are
     the closed forms' (``centre_lines``, ``loss_at_zero``)."""
-    T0, r = 100.0, np.array([2.0, 10.0, 30.0])
+    T0, r = 100.0, np.array([2.0, 10.0, 30.0, 95.0])  # the last never slips once μ > 0.05
     up = np.linspace(-T0, T0, 401)
     torque = np.concatenate([np.linspace(0, T0, 201), up[::-1][1:], up[1:]])
     states = plays.stop_states(torque, r, (np.array([0, 200, 600]), 1), mu, T0)
@@ -75,20 +75,22 @@ def test_the_centre_line_and_loss_are_the_steady_loop_s(mu):
     centre = plays.centre_lines(up, r, T0, mu)
     assert np.allclose(centre, 0.5 * (loading + unloading), atol=1e-12)
     zero = 200  # row of T = 0 on `up`
-    width = (loading[zero] - unloading[zero]) @ np.ones(3)  # s leads on loading
-    assert plays.loss_at_zero(np.ones(3), r, T0, mu) == pytest.approx(width, rel=1e-12)
+    width = (loading[zero] - unloading[zero]) @ np.ones(4)  # s leads on loading
+    assert plays.loss_at_zero(np.ones(4), r, T0, mu) == pytest.approx(width, rel=1e-12)
 
 
-@pytest.mark.parametrize("name", ["h-torsion-single-hysteresis-flank-001",
-                                  "h-torsion-single-hysteresis-flank-002"])
-def test_a_loop_that_widens_with_the_torque_takes_load_dependent_slip(name):
+@pytest.mark.parametrize("name, named", [
+    ("h-torsion-single-hysteresis-flank-001", ["hysteresis"]),
+    ("h-torsion-single-hysteresis-flank-002", ["hysteresis", "housing_compliance"])])
+def test_a_loop_that_widens_with_the_torque_takes_load_dependent_slip(name, named):
     """Suite H's flank-friction plays (seed 7, 2 per cell): with slip torques fixed the
     loop left 1.25σ and 1.56σ; with the load share the residual is within the issue's
-    1.2σ, the hysteresis is still named first, and the report gives the share and its
-    formula."""
+    1.2σ, and the report gives the share and its formula. The second case's spring is a
+    wrong second name, as before: the selection, before any loop form is refined, reads the
+    loop's widening as a spring beside a loop of fixed slip torques."""
     case = named_case("h", name, 7)
     result = bench.reconcile_case(case)
-    assert result["missing_effects"][0] == "hysteresis"
+    assert result["missing_effects"] == named
     assert result["rmse_after"] <= 1.2 * case.noise_rms
     step = next(s for s in result["steps"] if s["effect"] == "hysteresis")
     assert step["form"].startswith(FLANK_FORM)

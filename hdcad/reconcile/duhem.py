@@ -2,14 +2,16 @@
 
 Harmonic drives lose more per cycle at larger torque amplitudes (Tuttle & Seering 1996;
 Taghirad & Bélanger 1998), and Dhaouadi, Ghorbel & Gandhi (2003) describe their hysteresis
-by a rate-independent Duhem operator. In its simplest such form the loop's state w relaxes
-along each branch towards a height set by the excursion just made:
+by a rate-independent Duhem operator. After theirs, with a memory of the amplitude: the
+loop's state w relaxes along each branch towards a height set by the excursion just made
+(this height rule is ours, not theirs):
 
     dw/d|u| = λ·(−d·h − w),   h = (A/T0)^p,
 
 u = T/T0 the torque over the test's largest, d the branch's direction and A half the torque
 excursion of the branch that ended at its turning point (h = 0 on the first branch, from
-rest). Between turning points the target is fixed, so the state is exact per branch:
+rest; the first reversal's A is half the excursion from the record's first torque, so a
+test that starts at zero torque and loads to T0 aims its second branch at 0.5^p). Between turning points the target is fixed, so the state is exact per branch:
 w = −d·h + (w_0 + d·h)·exp(−λ·|u − u_0|). A Bouc–Wen loop saturates at one height whatever
 the amplitude and a Preisach loop's minor loops close on their turning points; this loop's
 height is the last excursion's, a memory of one half-cycle.

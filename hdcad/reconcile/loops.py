@@ -147,8 +147,11 @@ def _shapes_beside_loop(problem: Problem, fit: Fit) -> int:
 
 
 def _parametric_loop_shapes(problem: Problem) -> int:
-    """The shapes of the problem's parametric loop: the Duhem loop's two (rate, power) or
-    the Preisach density's three when it holds one, else the Bouc–Wen loop's five."""
+    """The shapes of the problem's loop besides its amplitudes: friction elements' none (or
+    their load share, when their slip torques grow with the torque), the Duhem loop's two
+    (rate, power), the Preisach density's three, else the Bouc–Wen loop's five."""
+    if problem.hysteresis_plays:
+        return 1 if problem.plays_load_share else 0
     if problem.hysteresis_duhem is not None:
         return 2
     return (3 if problem.hysteresis_preisach is not None
@@ -249,9 +252,7 @@ def refine_creep(problem: Problem, fit: Fit) -> Fit:
     if (problem.kind != "torsion" or "hysteresis" not in fit.effects
             or problem.base.curve is None or problem.hysteresis_creep):
         return fit
-    # friction elements' weights are amplitudes: without the loop only a parametric loop's
-    # shapes go
-    loop = 0 if problem.hysteresis_plays else _parametric_loop_shapes(problem)
+    loop = _parametric_loop_shapes(problem)  # without the loop, its shapes go
     trials = []
     for where, centred in _CREEP_FORMS:
         problem.hysteresis_creep, problem.creep_centred = where, centred

@@ -233,6 +233,9 @@ def _stop_states(problem: Problem, torque: np.ndarray, branches, rows) -> np.nda
     mu, t0 = problem.plays_load_share, problem.scales["T0"]
     key = ("plays", isinstance(rows, slice), problem.hysteresis_centred, mu)
     if key not in problem.cache:
+        for other in [k for k in problem.cache
+                      if isinstance(k, tuple) and k[0] == "plays" and k[3] != mu]:
+            del problem.cache[other]  # one load share at a time: each is n × 16
         r = plays.thresholds(t0)
         S = plays.stop_states(torque, r, branches, mu, t0)
         if problem.hysteresis_centred:

@@ -128,6 +128,7 @@ def report_context(result: Reconciliation, figures: list[dict]) -> dict:
                 "explained": f"{c['explained_var_over_noise']:.2f}",
                 "verdict": "added" if c["accepted"] else
                 "added, set aside later" if c.get("set_aside") else
+                "held back: its gear twin reads the same" if c.get("held_for_twin") else
                 ("passes, not best" if c["passes"] else "rejected")} for c in r]
               for r in result.candidates]
     regions = [{"where": r["where"], "before": fmt(r["rms_before"], unit),

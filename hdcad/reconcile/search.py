@@ -53,13 +53,14 @@ __all__ = ["BIC_MIN", "GATE_NOTE", "Candidate", "Gate", "gate", "round_noise", "
 # shared member's formula misses, not an identified second effect.
 SECOND_AMBIGUITY = 0.05
 MAX_GEAR_EFFECTS = 2
-# A measurement effect that a gear effect nearly reads as must beat it by BIC_MIN, not only
-# fit better: a torque channel's gain takes extra twist that grows with torque, as a series
-# spring does (a loop and a spring together were read as a gain beside the loop, ΔBIC 342.5
-# against the spring's 340.6, when the loop's single fit was still poor); a drift with time
-# reads as a temperature law where the test warms as it runs (0.2–3 BIC apart: a tie)
+# A measurement effect that a gear effect nearly reads as must beat it by BIC_MIN: a torque
+# channel's gain takes a series spring's extra twist (a loop and a spring were read as a gain
+# beside the loop, ΔBIC 342.5 against 340.6); a drift with time reads as a temperature law in
+# a test that warms as it runs (0.2–3 BIC apart). The drift held back so is selected again
+# beside the gear effects (a gain is not: beside two gear effects it could stand for a third)
 GEAR_TWIN = {("torsion", "sensor_gain"): "housing_compliance",
              ("efficiency", "thermal_drift"): "temperature_dependence"}
+TWIN_RETRIED = {("efficiency", "thermal_drift")}
 
 
 def select_rig(problem: Problem, start: Fit, known: dict[str, Fit] | None = None

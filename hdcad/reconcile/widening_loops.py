@@ -40,7 +40,8 @@ from scipy.optimize import minimize
 from . import plays
 from .fitting import Fit, Problem, finish, rss_at
 from .gates import EXPLAINED_MIN, beyond
-from .loops import DUHEM, FLANK, _parametric_loop_shapes, _replace_loop_notes, _set_plays_form
+from .loops import (DUHEM, FLANK, _parametric_loop_shapes, _replace_loop_notes,
+                    _set_plays_form)
 
 # shares μ of the carried torque added to every slip torque, about 2 per decade: a flank
 # friction coefficient (0.05–0.15 for lubricated steel on steel) times the ratio of the
@@ -65,8 +66,8 @@ def _named_form(problem: Problem, fit: Fit) -> tuple[tuple, int] | None:
             or problem.base.curve is None or problem.branches is None
             or problem.hysteresis_series or problem.hysteresis_creep):
         return None
-    loop = 0 if problem.hysteresis_plays else _parametric_loop_shapes(problem)
-    return tuple(getattr(problem, a) for a in _FORM), fit.shapes - loop
+    shapes = fit.shapes - _parametric_loop_shapes(problem)
+    return tuple(getattr(problem, a) for a in _FORM), shapes
 
 
 def _kept(problem: Problem, fit: Fit, found: Fit, named: tuple) -> bool:

@@ -156,7 +156,7 @@ def reconcile(kind: str, data: dict, model: GearModel, catalog: Catalog,
     unselected = _copy(problem)  # the selection sets the named forms on the problem
     best, candidates = search.select_gear(problem, with_rig, singles)
     problem, with_rig, best, candidates = _gear_twin_instead(
-        problem, unselected, with_rig, best, candidates, _held_for_twin(rig_table))
+        problem, unselected, with_rig, best, candidates, _held_for_twin(kind, rig_table))
     final = search.recheck_rig(problem, best.fit if best else with_rig)
     final = refine.refine(problem, _without_outliers(problem, final))
     keep = np.ones(len(base.y), bool)
@@ -230,11 +230,12 @@ def _gear_twin_instead(problem: Problem, unselected: Problem, with_rig: Fit, bes
     return unselected, start, alt_best, alt_candidates
 
 
-def _held_for_twin(table: list[list[dict]]) -> tuple[str, ...]:
+def _held_for_twin(kind: str, table: list[list[dict]]) -> tuple[str, ...]:
     """The measurement effects of the rig search's last round held back only for their gear
-    twin (each passed, but did not beat the twin alone by ``BIC_MIN``)."""
+    twin (each passed, but did not beat the twin alone by ``BIC_MIN``) that are selected
+    again beside the gear effects (:data:`.search.TWIN_RETRIED`)."""
     return tuple(row["effect"] for row in (table[-1] if table else ())
-                 if row.get("held_for_twin"))
+                 if row.get("held_for_twin") and (kind, row["effect"]) in search.TWIN_RETRIED)
 
 
 def _rmse_beside(problem: Problem, final: Fit, rivals: tuple[str, ...], keep
@@ -276,10 +277,11 @@ def _candidate_rows(candidates, rig_table, named, rig_kept) -> list[list[dict]]:
              "cv_gain": c.gate.cv_gain, "explained_var_over_noise": c.gate.explained,
              "accepted": c.effects == tuple(named), "passes": c.passes, "reason": c.reason}
             for c in candidates]
-    rounds = [[dict(r, accepted=(r.get("added", False) or r.get("held_for_twin", False))
-                    and r["effect"] in rig_kept,
+    last = len(rig_table) - 1  # only the last round's held effects are selected again
+    rounds = [[dict(r, accepted=(r.get("added", False) or (k == last and r.get(
+                    "held_for_twin", False))) and r["effect"] in rig_kept,
                     set_aside=r.get("added", False) and r["effect"] not in rig_kept)
-               for r in round_] for round_ in rig_table]
+               for r in round_] for k, round_ in enumerate(rig_table)]
     return rounds + [gear]
 
 
