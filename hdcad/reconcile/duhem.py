@@ -11,7 +11,8 @@ loop's state w relaxes along each branch towards a height set by the excursion j
 u = T/T0 the torque over the test's largest, d the branch's direction and A half the torque
 excursion of the branch that ended at its turning point (h = 0 on the first branch, from
 rest; the first reversal's A is half the excursion from the record's first torque, so a
-test that starts at zero torque and loads to T0 aims its second branch at 0.5^p). Between turning points the target is fixed, so the state is exact per branch:
+test that starts at zero torque and loads to T0 aims its second branch at 0.5^p). Between
+turning points the target is fixed, so the state is exact per branch:
 w = −d·h + (w_0 + d·h)·exp(−λ·|u − u_0|). A Bouc–Wen loop saturates at one height whatever
 the amplitude and a Preisach loop's minor loops close on their turning points; this loop's
 height is the last excursion's, a memory of one half-cycle.

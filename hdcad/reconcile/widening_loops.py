@@ -43,7 +43,7 @@ from .gates import EXPLAINED_MIN, beyond
 from .loops import (DUHEM, FLANK, _parametric_loop_shapes, _replace_loop_notes,
                     _set_plays_form)
 
-# shares μ of the carried torque added to every slip torque, about 2 per decade: a flank
+# shares μ of the carried torque added to every slip torque (1-2-5 steps, then 0.2 apart): a flank
 # friction coefficient (0.05–0.15 for lubricated steel on steel) times the ratio of the
 # flanks' normal load to the tangential, from a loop that barely widens to one that is nearly
 # all the load's (μ < 1: past that the friction would hold any torque)
@@ -51,8 +51,6 @@ LOAD_SHARES = (0.01, 0.02, 0.05, 0.1, 0.2, 0.4, 0.6, 0.8)
 # the share at which the loop's form is chosen (11 fits in place of 32, the same choices on
 # suites B–L)
 FORM_SHARE = 0.1
-
-
 # the problem's settings that make the loop's form
 _FORM = ("hysteresis_centred", "hysteresis_through_gear", "hysteresis_preisach",
          "hysteresis_plays", "plays_load_share", "hysteresis_duhem")
