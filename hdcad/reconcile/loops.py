@@ -140,9 +140,9 @@ def refine_preisach(problem: Problem, fit: Fit) -> Fit:
 
 
 def _shapes_beside_loop(problem: Problem, fit: Fit) -> int:
-    """The parameters of ``fit`` other than its amplitudes and its loop's shapes (the Bouc–Wen
-    loop's five or the Preisach density's three): the other effects' shapes in use and the
-    terms a refinement added (a play's holding torque)."""
+    """The parameters of ``fit`` other than its amplitudes and its loop's shapes
+    (:func:`_parametric_loop_shapes`): the other effects' shapes in use and the terms a
+    refinement added (a play's holding torque)."""
     return fit.shapes - _parametric_loop_shapes(problem)
 
 
@@ -252,11 +252,11 @@ def refine_creep(problem: Problem, fit: Fit) -> Fit:
     if (problem.kind != "torsion" or "hysteresis" not in fit.effects
             or problem.base.curve is None or problem.hysteresis_creep):
         return fit
-    loop = _parametric_loop_shapes(problem)  # without the loop, its shapes go
+    beside = _shapes_beside_loop(problem, fit)  # without the loop, its shapes go
     trials = []
     for where, centred in _CREEP_FORMS:
         problem.hysteresis_creep, problem.creep_centred = where, centred
-        shapes = fit.shapes - loop if where == "alone" else fit.shapes
+        shapes = beside if where == "alone" else fit.shapes
         trials.append((finish(problem, fit.effects, fit.theta, shapes), where, centred))
     best, where, centred = trials[bic_choice(problem, [t[0] for t in trials])]
     if not beyond(problem, fit, best, explained_min=EXPLAINED_MIN):

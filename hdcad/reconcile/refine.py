@@ -21,7 +21,6 @@ from scipy.optimize import minimize_scalar
 from . import efficiency_laws as laws
 from .baseline import COMPLIANCE_SCALE_BOUNDS, STIFFNESS_SPREAD
 from .fitting import Fit, Problem, best_setting, finish, fit_model, shapes_in_use
-from .widening_loops import refine_duhem, refine_flank_friction
 from .frames import refine_frames
 from .gates import EXPLAINED_MIN, beyond, bic_best, effective_n
 from .joint_fit import refine_spring
@@ -32,6 +31,7 @@ from .rig import step_position
 from .springs import refine_opening
 from .stribeck import refine_hersey
 from .te_forms import refine_te_order, refine_te_overtones, refine_te_sidebands
+from .widening_loops import refine_duhem, refine_flank_friction
 
 _SPEED_LOSS_BOUNDS = (-0.5, 0.9)  # as the viscous share a of the temperature law
 # exponent k of a drag ∝ ν^k: 0 (no coupling) … 2 (Petroff's viscous torque is ∝ ν; a

@@ -40,13 +40,12 @@ from scipy.optimize import minimize
 from . import plays
 from .fitting import Fit, Problem, finish, rss_at
 from .gates import EXPLAINED_MIN, beyond
-from .loops import (DUHEM, FLANK, _parametric_loop_shapes, _replace_loop_notes,
-                    _set_plays_form)
+from .loops import DUHEM, FLANK, _replace_loop_notes, _set_plays_form, _shapes_beside_loop
 
-# shares μ of the carried torque added to every slip torque (1-2-5 steps, then 0.2 apart): a flank
-# friction coefficient (0.05–0.15 for lubricated steel on steel) times the ratio of the
-# flanks' normal load to the tangential, from a loop that barely widens to one that is nearly
-# all the load's (μ < 1: past that the friction would hold any torque)
+# shares μ of the carried torque added to every slip torque (1-2-5 steps, then 0.2 apart):
+# a flank friction coefficient (0.05–0.15 for lubricated steel on steel) times the ratio of
+# the flanks' normal load to the tangential, from a loop that barely widens to one that is
+# nearly all the load's (μ < 1: past that the friction would hold any torque)
 LOAD_SHARES = (0.01, 0.02, 0.05, 0.1, 0.2, 0.4, 0.6, 0.8)
 # the share at which the loop's form is chosen (11 fits in place of 32, the same choices on
 # suites B–L)
@@ -64,8 +63,7 @@ def _named_form(problem: Problem, fit: Fit) -> tuple[tuple, int] | None:
             or problem.base.curve is None or problem.branches is None
             or problem.hysteresis_series or problem.hysteresis_creep):
         return None
-    shapes = fit.shapes - _parametric_loop_shapes(problem)
-    return tuple(getattr(problem, a) for a in _FORM), shapes
+    return tuple(getattr(problem, a) for a in _FORM), _shapes_beside_loop(problem, fit)
 
 
 def _kept(problem: Problem, fit: Fit, found: Fit, named: tuple) -> bool:
