@@ -8,8 +8,8 @@
 3. A model is accepted over a simpler one when it passes the gates of :mod:`.gates`
    (ΔBIC on the effective sample size, blocked cross-validation, explained variance, the
    share a second effect must explain; a loop for hysteresis).
-4. A housing spring may stiffen (:mod:`.springs`): a slowly taken-up backlash is weighed
-   against it, and one named effect may have it as its second.
+4. Housing springs (:mod:`.springs`): one that stiffens, weighed against a slowly taken-up
+   backlash or as a named effect's second; a linear one beside a backlash, by its shape.
 5. Readings: when another pair with the same first member comes within
    ``SECOND_AMBIGUITY`` of the best pair's ΔBIC, the second is not identified and only the
    first is named (:func:`ambiguous_second`); a hysteresis + housing spring pair whose
@@ -280,9 +280,9 @@ def _pair(problem: Problem, start: Fit, fa: Fit, fb: Fit, fit: Fit, sigma: float
     ok, reason = g.passes(), ""
     for member, other in ((a, fb), (b, fa)):
         over = gate(problem, other, fit, sigma, tau)
-        if not (over.passes(second=True) or over.passes()
-                and (_beyond_modulation(problem, member, other, fit, sigma, tau)
-                     or _beyond_spread(problem, member, other))):
+        if not (over.passes(second=True) or springs.by_its_shape(member, other, over)
+                or over.passes() and (_beyond_modulation(problem, member, other, fit, sigma, tau)
+                                      or _beyond_spread(problem, member, other))):
             ok, reason = False, f"{member} adds too little to {other.effects[-1]}"
         elif not has_evidence(problem, member, other, sigma, tau):
             ok, reason = False, f"no loop in the residual of {other.effects[-1]}"
@@ -322,8 +322,8 @@ def _beyond_spread(problem: Problem, member: str, other: Fit) -> bool:
     to a gear softer than the catalog's spread: refitted without the spread's bounds, the
     other effect's model reads the gear beyond it. The catalog holds the gear within its
     spread, so the rest is a spring outside the gear, however little of the other's residual
-    it explains once the scale has taken the spread (the share rule guards a second that
-    takes a sliver of the first's misfit, not a bound in force)."""
+    it explains once the scale has taken the spread (the share rule guards a sliver of the
+    first's misfit, not a bound in force)."""
     scale = free_scale(problem, other) if member == "housing_compliance" else None
     return scale is not None and scale > COMPLIANCE_SCALE_BOUNDS[1]
 
