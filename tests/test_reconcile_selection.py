@@ -111,17 +111,63 @@ def test_a_linear_spring_beside_a_backlash_is_named_by_its_shape(suite, name):
     result = bench.reconcile_case(case)
     assert result["missing_effects"] == ["backlash", "housing_compliance"]
     assert result["rmse_after"] <= 1.2 * case.noise_rms
+    assert _softer_gear_reading(result)
 
 
-@pytest.mark.parametrize("suite,name", [
-    ("l", "l-torsion-single-backlash-twolock-000"),          # the spring: ΔBIC −2.0
-    ("k", "k-torsion-single-backlash-wear-grown-001"),       # ΔBIC 8.8, its CV error 0.0 % lower
+def _softer_gear_reading(result, within: bool = True) -> bool:
+    """The other reading of a named spring: a softer gear; inside the spread, told from the
+    spring only by its shape."""
+    return any(r.get("nuisance") == "stiffness_scale"
+               and ("told apart only by how the compliance runs" in r["text"]) == within
+               for r in result["equivalent_readings"])
+
+
+@pytest.mark.parametrize("suite,name,within", [
+    ("b", "b-torsion-single-housing_compliance-series-000", True),   # ΔBIC 25, 0.049 variances
+    ("h", "h-torsion-single-housing-bredt-002", False),              # ΔBIC 138, 0.056 variances
 ])
-def test_a_backlash_alone_gets_no_spring_for_a_sliver_of_bic(suite, name):
-    """Backlash singles (seed 7, 2 per cell) beside which a linear spring lowers the BIC by
-    less than 10: only the backlash is named."""
+def test_a_linear_spring_alone_is_named_by_its_shape(suite, name, within):
+    """Housing-spring singles of suites B and H (seed 7, 2 per cell; without the spring the
+    gear reads 6.5 % and 10.6 % softer, the scale held at its 10 % spread): the spring lowers
+    the BIC by 25 and 138 over the scale but explains only about 0.05 noise variances, and
+    nothing was named. Named by its shape now, with the softer gear given as the other
+    reading (inside the spread: told from the spring only by its shape); clean cases never
+    gave that shape ΔBIC above 7.2."""
+    case = named_case(suite, name, 7)
+    result = bench.reconcile_case(case)
+    assert result["missing_effects"] == ["housing_compliance"]
+    assert _softer_gear_reading(result, within)
+    assert result["rmse_after"] <= 1.2 * case.noise_rms
+
+
+def test_a_spring_is_named_by_its_shape_only_alone_or_beside_a_backlash():
+    """The rule itself: ΔBIC > 10 and a cross-validated error that falls, for a housing
+    spring alone or beside a backlash; not beside a loop (whose backbone a spring stands in
+    for), not for another effect, not at ΔBIC 10 or a CV error that does not fall."""
+    from hdcad.reconcile.springs import by_its_shape
+    small = Gate(delta_bic=11.0, cv_gain=0.003, explained=0.03, share=1.0)
+    assert by_its_shape("housing_compliance", None, small)
+    assert by_its_shape("housing_compliance", "backlash", small)
+    assert not by_its_shape("housing_compliance", "hysteresis", small)
+    assert not by_its_shape("backlash", "housing_compliance", small)
+    assert not by_its_shape("housing_compliance", "backlash",
+                            Gate(delta_bic=10.0, cv_gain=0.003, explained=0.03, share=1.0))
+    assert not by_its_shape("housing_compliance", "backlash",
+                            Gate(delta_bic=40.0, cv_gain=0.0, explained=0.03, share=1.0))
+
+
+@pytest.mark.parametrize("suite,name,named", [
+    ("l", "l-torsion-single-backlash-twolock-000", ["backlash"]),       # the spring: ΔBIC −2.0
+    ("k", "k-torsion-single-backlash-wear-grown-001", ["backlash"]),    # ΔBIC 8.8
+    # the known wrong second: a quintic dead zone preloaded by a slider's weight, beside which
+    # a spring lowers the BIC by 11.2 (the rule's cost, measured)
+    ("k", "k-torsion-single-backlash-gravity-biased-oldham-001", ["backlash", "housing_compliance"]),
+])
+def test_a_backlash_single_s_spring_follows_the_rule(suite, name, named):
+    """Backlash singles (seed 7, 2 per cell): a linear spring beside them lowers the BIC by
+    less than 10 and is not named, or by 11.2 and is (a wrong second the rule accepts)."""
     result = bench.reconcile_case(named_case(suite, name, 7))
-    assert result["missing_effects"] == ["backlash"]
+    assert result["missing_effects"] == named
 
 
 def test_a_modulated_first_error_does_not_hide_a_second_harmonic():
@@ -170,9 +216,10 @@ def test_a_backlash_named_alone_is_weighed_against_a_stiffening_spring_at_any_wi
 
 
 def test_a_stiffening_spring_behind_a_sharp_backlash_is_named_second():
-    """Suite C's tanh backlash + cubic housing pair (seed 11): the linear housing spring adds
-    nothing over the backlash (the stiffness scale takes a linear compliance), a stiffening
-    one adds ΔBIC ≈ 80–140; it was named backlash alone before."""
+    """Suite C's tanh backlash + cubic housing pair (seed 11): a stiffening spring adds
+    ΔBIC ≈ 80–140 over the backlash and passes every gate, so it is named with its knee
+    torque (a linear spring beside the backlash is weighed against it when that passes by
+    its shape only); it was named backlash alone before."""
     case = named_case("c", "c-torsion-pair-backlashhousingcompliance-tanhcubic-000", 11)
     result = bench.reconcile_case(case)
     assert result["missing_effects"] == ["backlash", "housing_compliance"]

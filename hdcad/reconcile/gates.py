@@ -8,7 +8,9 @@ variance it explains is ≥ ``EXPLAINED_MIN`` of the noise variance; and an effe
 another must explain ≥ ``SECOND_SHARE_MIN`` of the structure the other leaves (residual
 variance above the noise): the shape mismatch of an effect's formula must not be named as a
 second effect. Hysteresis also needs its signature: loading and unloading branches that
-differ beyond the noise (a loop), not only a better fit (:func:`loop_evidence`).
+differ beyond the noise (a loop), not only a better fit (:func:`loop_evidence`). A linear
+housing spring, alone or beside a backlash, may pass by its shape instead (ΔBIC and a
+cross-validated error that falls: :func:`.springs.by_its_shape`).
 
 References
 ----------
@@ -41,7 +43,10 @@ GATE_NOTE = (f"an effect is named when ΔBIC > {BIC_MIN:g} (effective sample siz
              f"blocked 5-fold cross-validated error falls by ≥ {CV_GAIN_MIN:.0%}, it explains "
              f"≥ {EXPLAINED_MIN:g}× the noise variance and, added to another effect, "
              f"≥ {SECOND_SHARE_MIN:.0%} of what that one leaves; hysteresis needs a loop "
-             "(loading and unloading branches apart beyond the noise)")
+             "(loading and unloading branches apart beyond the noise); a linear housing "
+             "spring, alone or beside a backlash, is named by its shape (ΔBIC > "
+             f"{BIC_MIN:g} and a cross-validated error that falls: the same compliance at "
+             "every torque, which the stiffness scale does not give)")
 
 
 @dataclass
@@ -144,6 +149,7 @@ class Candidate:
     undecided: tuple[str, ...] = ()   # second effects left unnamed as ambiguous
     series_slip: bool = False         # the pair reads the same as one series slip element
     progressive: bool = False         # a slow backlash read as a stiffening series spring
+    by_shape: bool = False            # a housing spring that passes by its shape only
 
 
 def effective_n(problem: Problem, residual: np.ndarray) -> float:

@@ -173,20 +173,27 @@ def undecided(named: tuple[str, ...], rivals: tuple[str, ...], rmse: dict[str, f
                      "that separates them decides)"}]
 
 
-def _spring_reading(problem: Problem, stiffness: float, within: bool) -> dict:
+def _spring_reading(problem: Problem, stiffness: float, within: bool, named: bool) -> dict:
     """A gear softer than the catalog, read as a gear at its catalog stiffness with a series
     spring that adds the same twist at the test's largest torque (the spring's compliance is
     the same at every torque, the scale's follows the curve: at these data the two read
-    alike)."""
+    alike). A spring named while the gear without it reads within the spread is told from
+    that gear only by its shape, which the text says."""
+    out = {"effects": ["housing_compliance"], "nuisance": "stiffness_scale"}
+    if named and within:
+        return {**out, "text": f"without the spring the gear reads {1 - stiffness:.1%} softer "
+                "than the catalog, within its spread: that gear with no spring is the other "
+                "reading, told apart only by how the compliance runs with the torque (a "
+                "linear spring's is the same at every torque, a softer gear's follows the "
+                "curve); the housing's own stiffness decides"}
     torque = float(np.max(np.abs(problem.base.inputs["torque_Nm"])))
     secant = float(catalog_twist(problem.base.curve, np.array([torque]), 0.0)[0]) / torque
     spring = stiffness / ((1 - stiffness) * secant)
-    return {"effects": ["housing_compliance"], "nuisance": "stiffness_scale",
-            "text": f"the gear reads {1 - stiffness:.1%} softer than the catalog"
-                    + (", within its spread" if within else "")
-                    + "; a gear at its catalog stiffness with a series spring (housing, "
-                    f"shafts) of about {spring:.3g} N·m/rad reads the same: the housing's own "
-                    "stiffness decides"}
+    return {**out, "text": f"the gear reads {1 - stiffness:.1%} softer than the catalog"
+                           + (", within its spread" if within else "")
+                           + "; a gear at its catalog stiffness with a series spring (housing, "
+                           f"shafts) of about {spring:.3g} N·m/rad reads the same: the "
+                           "housing's own stiffness decides"}
 
 
 def equivalent(problem: Problem, fit: Fit, named: tuple[str, ...], found: list[dict]
@@ -195,12 +202,11 @@ def equivalent(problem: Problem, fit: Fit, named: tuple[str, ...], found: list[d
     out = []
     stiffness = next((n for n in found if n["name"] == "stiffness_scale"), None)
     if problem.kind == "torsion" and stiffness and problem.base.curve is not None:
-        # a named spring may be a gear softer beyond the spread; a gear softer within it
-        # may be a spring not named
-        floor = STIFFNESS_SPREAD if "housing_compliance" in named else SOFTER_READING_MIN
-        if stiffness["value"] < 1 - floor:
-            out.append(_spring_reading(problem, stiffness["value"],
-                                       stiffness["within_spread"]))
+        # a named spring may be a gear softer, beyond the spread or (but for the spring's
+        # shape) within it; a gear softer within it may be a spring not named
+        if stiffness["value"] < 1 - SOFTER_READING_MIN:
+            out.append(_spring_reading(problem, stiffness["value"], stiffness["within_spread"],
+                                       "housing_compliance" in named))
     if problem.kind == "transmission" and "te_1x" in named:
         out.append({"effects": ["te_1x"], "measurement": "encoder_eccentricity",
                     "text": "once per WG revolution: the gear's transmission error, or an "

@@ -8,8 +8,8 @@
 3. A model is accepted over a simpler one when it passes the gates of :mod:`.gates`
    (ΔBIC on the effective sample size, blocked cross-validation, explained variance, the
    share a second effect must explain; a loop for hysteresis).
-4. Housing springs (:mod:`.springs`): one that stiffens, weighed against a slowly taken-up
-   backlash or as a named effect's second; a linear one beside a backlash, by its shape.
+4. Housing springs (:mod:`.springs`): one that stiffens, against a slow backlash or as a
+   named effect's second; a linear one, alone or beside a backlash, by its shape.
 5. Readings: when another pair with the same first member comes within
    ``SECOND_AMBIGUITY`` of the best pair's ΔBIC, the second is not identified and only the
    first is named (:func:`ambiguous_second`); a hysteresis + housing spring pair whose
@@ -35,15 +35,11 @@ import math
 from dataclasses import replace
 
 from . import effects as fx
-from . import rig, springs
-from .baseline import COMPLIANCE_SCALE_BOUNDS
+from . import rig, seconds, springs
 from .fitting import Fit, Problem, fit_model, rss_at
-from .gates import (BIC_MIN, EXPLAINED_MIN, GATE_NOTE, Candidate, Gate, bic_gain, effective_n,
-                    gate, has_evidence, round_noise)
+from .gates import (BIC_MIN, GATE_NOTE, Candidate, Gate, bic_gain, effective_n, gate,
+                    has_evidence, round_noise)
 from .loops import THROUGH_GEAR, preisach_forms, series_plays, series_slip, use_preisach
-from .readings import free_scale
-from .refine import fit_viscosity_law
-from .te_forms import refine_te_order
 
 __all__ = ["BIC_MIN", "GATE_NOTE", "Candidate", "Gate", "gate", "round_noise", "select_gear",
            "select_rig", "recheck_rig"]
@@ -157,15 +153,20 @@ def select_gear(problem: Problem, start: Fit, singles: dict[str, Fit] | None = N
     for n, fit in singles.items():
         g = gate(problem, start, fit, sigma, tau)
         evidence = has_evidence(problem, n, start, sigma, tau)
-        out.append(Candidate((n,), fit, g, g.passes() and evidence,
-                             "" if evidence else "no loop in the residual"))
+        shaped = not g.passes() and springs.by_its_shape(n, None, g)
+        out.append(Candidate((n,), fit, g, (g.passes() or shaped) and evidence,
+                             "" if evidence else "no loop in the residual", by_shape=shaped))
     for (a, b), fit in pairs.items():
         out.append(_pair(problem, start, singles[a], singles[b], fit, sigma, tau))
     passing = [c for c in out if c.passes]
-    best = max(passing, key=lambda c: c.gate.delta_bic) if passing else None
+    # a spring alone by its shape only when nothing else passes, a Preisach loop included
+    strict = [c for c in passing if not (c.by_shape and len(c.effects) == 1)]
+    best = max(strict, key=lambda c: c.gate.delta_bic) if strict else None
     best = _unless_ambiguous(best, passing)
     if best is None and "hysteresis" in singles and problem.base.curve is not None:
         best = _preisach_single(problem, start, singles, list(pairs.values()), out)
+    if best is None and passing:
+        best = max(passing, key=lambda c: c.gate.delta_bic)
     tied = series_slip(problem, start, best, sigma, tau) if best is not None else None
     through = _through_gear(problem, best, tied, sigma, tau) if tied is not None else None
     if through is not None:  # the pair stays, its loop through the gear's compliance
@@ -235,11 +236,11 @@ def ambiguous_second(best: Candidate, passing: list[Candidate]
 
 def _unless_ambiguous(best: Candidate | None, passing: list[Candidate]) -> Candidate | None:
     """The best pair, or its shared member alone when its second is ambiguous
-    (:func:`ambiguous_second`) and that member passes alone."""
+    (:func:`ambiguous_second`) and that member passes alone (not a spring by its shape only)."""
     found = ambiguous_second(best, passing) if best else None
     if found is None:
         return best
-    single = next((c for c in passing if c.effects == (found[0],)), None)
+    single = next((c for c in passing if c.effects == (found[0],) and not c.by_shape), None)
     return replace(single, undecided=found[1]) if single else best
 
 
@@ -274,75 +275,24 @@ def _pair_fit(problem: Problem, start: Fit, fa: Fit, fb: Fit) -> Fit:
 
 def _pair(problem: Problem, start: Fit, fa: Fit, fb: Fit, fit: Fit, sigma: float, tau: float
           ) -> Candidate:
-    """A pair candidate; each member must earn its place over the other alone."""
+    """A pair candidate; each member must earn its place over the other alone
+    (:func:`.seconds.earns_place`)."""
     a, b = fa.effects[-1], fb.effects[-1]
     g = gate(problem, start, fit, sigma, tau)
-    ok, reason = g.passes(), ""
+    ok, reason, shaped = g.passes(), "", False
     for member, other in ((a, fb), (b, fa)):
-        over = gate(problem, other, fit, sigma, tau)
-        if not (over.passes(second=True) or springs.by_its_shape(member, other, over)
-                or over.passes() and (_beyond_modulation(problem, member, other, fit, sigma, tau)
-                                      or _beyond_spread(problem, member, other))):
+        earned, by_shape = seconds.earns_place(problem, member, other, fit, sigma, tau)
+        shaped |= by_shape
+        if not earned:
             ok, reason = False, f"{member} adds too little to {other.effects[-1]}"
         elif not has_evidence(problem, member, other, sigma, tau):
             ok, reason = False, f"no loop in the residual of {other.effects[-1]}"
-        elif ok and not _beyond_law(problem, member, other, fit, sigma, tau):
+        elif ok and not seconds.beyond_law(problem, member, other, fit, sigma, tau):
             ok, reason = False, (f"{member} adds too little to {other.effects[-1]} with its "
                                  "viscosity law fitted")
     # the member that explains more alone is named first
     order = (a, b) if fa.rss <= fb.rss else (b, a)
-    return Candidate(order, fit, g, ok, reason)
-
-
-def _beyond_modulation(problem: Problem, member: str, other: Fit, fit: Fit, sigma: float,
-                       tau: float) -> bool:
-    """Whether the transmission error ``member`` still earns its place once the other
-    error follows its own slow modulation (Legendre order chosen by BIC,
-    :func:`.te_forms.refine_te_order`). What a modulated error leaves at the naming order is
-    its own misfit, which the share rule would ask a second harmonic to explain; another
-    harmonic's carrier cannot take that misfit, so the pair, its order chosen the same way,
-    is tested against the modulated one by ΔBIC and explained variance (a blocked
-    cross-validation would judge the Legendre columns' extrapolation into the held-out
-    block, not the harmonic)."""
-    if not (member.startswith("te_") and other.effects[-1].startswith("te_")):
-        return False
-    saved = problem.te_order
-    try:
-        modulated = refine_te_order(problem, other)
-        problem.te_order = saved
-        pair = refine_te_order(problem, fit)
-    finally:
-        problem.te_order = saved
-    g = gate(problem, modulated, pair, sigma, tau)
-    return g.delta_bic > BIC_MIN and g.explained > EXPLAINED_MIN
-
-
-def _beyond_spread(problem: Problem, member: str, other: Fit) -> bool:
-    """Whether the housing spring ``member`` is the compliance the other effect alone leaves
-    to a gear softer than the catalog's spread: refitted without the spread's bounds, the
-    other effect's model reads the gear beyond it. The catalog holds the gear within its
-    spread, so the rest is a spring outside the gear, however little of the other's residual
-    it explains once the scale has taken the spread (the share rule guards a sliver of the
-    first's misfit, not a bound in force)."""
-    scale = free_scale(problem, other) if member == "housing_compliance" else None
-    return scale is not None and scale > COMPLIANCE_SCALE_BOUNDS[1]
-
-
-def _beyond_law(problem: Problem, member: str, other: Fit, fit: Fit, sigma: float,
-                tau: float) -> bool:
-    """Whether ``member`` still earns its place over a temperature dependence that has its best
-    viscosity law (:data:`.efficiency_laws.VISCOSITY_LAWS_C`; Reynolds' names the effects).
-    The laws differ in how the viscosity curves over the temperatures: what Reynolds' leaves
-    of an Andrade or Vogel–Cameron oil is the first effect's own shape, which a low-load
-    factor, also scaling the efficiency, would otherwise be named for."""
-    if other.effects[-1] != "temperature_dependence" or problem.kind != "efficiency":
-        return True
-    saved = problem.viscosity_C
-    try:
-        single, pair = (fit_viscosity_law(problem, model)[0] for model in (other, fit))
-    finally:
-        problem.viscosity_C = saved
-    return gate(problem, single, pair, sigma, tau).passes(second=True)
+    return Candidate(order, fit, g, ok, reason, by_shape=shaped)
 
 
 def _spring_of_its_own(problem: Problem, best: Candidate | None, passing: list[Candidate],

@@ -1,4 +1,5 @@
-"""A housing spring that stiffens, against a backlash that is taken up slowly.
+"""Housing springs: one that stiffens, weighed against a backlash taken up slowly, and a
+linear one named by its shape.
 
 A clearance closing over a wide torque band and a series spring whose stiffness grows with
 torque (contact that closes gradually, bolted joints) bend the torque–twist curve alike.
@@ -10,9 +11,9 @@ Two readings follow from it once the gear effects are named:
   a linear series spring is mostly the catalog compliance's own scatter (the stiffness scale
   takes its size), a stiffening one bends the curve.
 
-A linear spring beside a backlash is named by its shape alone (:func:`by_its_shape`): it adds
-the same compliance at every torque, where the stiffness scale adds in proportion to the
-gear's own.
+A linear spring, alone or beside a backlash, may be named by its shape (:func:`by_its_shape`):
+it adds the same compliance at every torque, where the stiffness scale adds in proportion to
+the gear's own.
 
 References
 ----------
@@ -53,7 +54,7 @@ def stiffening(problem: Problem, start: Fit, best: Candidate, singles: dict[str,
     if problem.kind != "torsion":
         return None
     return (slow_backlash(problem, start, best, singles, sigma, tau)
-            or stiffening_second(problem, start, best, sigma, tau))
+            or stiffening_second(problem, start, best, singles, sigma, tau))
 
 
 def slow_backlash(problem: Problem, start: Fit, best: Candidate, singles: dict[str, Fit],
@@ -89,10 +90,12 @@ def slow_backlash(problem: Problem, start: Fit, best: Candidate, singles: dict[s
     return None
 
 
-def stiffening_second(problem: Problem, start: Fit, best: Candidate, sigma: float,
-                      tau: float) -> Candidate | None:
+def stiffening_second(problem: Problem, start: Fit, best: Candidate, singles: dict[str, Fit],
+                      sigma: float, tau: float) -> Candidate | None:
     """A named backlash with a housing spring that stiffens as its second, when that spring
-    earns its place over the backlash alone; else None.
+    earns its place over the backlash alone; else None. A linear spring named beside the
+    backlash by its shape only (:func:`by_its_shape`) is weighed the same way: one that
+    stiffens and passes the full gates is the better reading.
 
     A linear series spring is mostly the catalog compliance's own scatter (the stiffness
     scale takes its size; :func:`by_its_shape` weighs the rest); a stiffening one bends the curve
@@ -100,30 +103,37 @@ def stiffening_second(problem: Problem, start: Fit, best: Candidate, sigma: floa
     loop's own saturation bends the curve too, and a stiffening spring would take the loop
     formula's shape mismatch (suite B's Bouc–Wen and Dahl singles, 2 of 12 at seed 7).
     """
-    if best.effects != ("backlash",):
+    named = ("backlash", "housing_compliance")
+    if best.effects == ("backlash",):
+        alone = best.fit
+    elif best.by_shape and set(best.effects) == set(named):
+        alone = singles["backlash"]
+    else:
         return None
-    named = best.effects + ("housing_compliance",)
-    pair = _knee_fit(problem, start.effects + named, best.fit.theta)
+    pair = _knee_fit(problem, start.effects + named, alone.theta)
     g = gate(problem, start, pair, sigma, tau)
-    if g.passes() and gate(problem, best.fit, pair, sigma, tau).passes(second=True):
+    if g.passes() and gate(problem, alone, pair, sigma, tau).passes(second=True):
         return Candidate(named, pair, g, True)
     problem.housing_knee = math.inf
     return None
 
 
-def by_its_shape(member: str, other: Fit, over: Gate) -> bool:
-    """Whether the housing spring ``member`` earns its place beside a backlash (``other``,
-    the backlash alone) by its shape: ΔBIC > ``BIC_MIN`` over it and a blocked
-    cross-validated error that falls, however little of the noise variance it explains.
+def by_its_shape(member: str, beside: str | None, over: Gate) -> bool:
+    """Whether the housing spring ``member`` earns its place alone (``beside`` None) or
+    beside a backlash by its shape: ΔBIC > ``BIC_MIN`` over the model without it and a
+    blocked cross-validated error that falls, however little of the noise variance it explains.
 
     The stiffness scale takes a series spring's compliance only in proportion to the gear's,
     which falls from K1 to K3; the spring adds the same at every torque. The catalog curve's
     own misfits do not take that shape: alone over the scale, the spring lowered the BIC by
     7.2 at most on the 206 clean and separable-decoy torsion cases of the truth suites
-    (seed 7). Beside a backlash, whose dead zone acts about zero torque, a spring inside the
-    scale's spread explains only 0.02–0.09 noise variances, short of ``EXPLAINED_MIN``, with
-    ΔBIC up to 78. A loop has a backbone that a spring stands in for: not beside one."""
-    return (member == "housing_compliance" and other.effects[-1] == "backlash"
+    (seed 7); beside a true backlash with no spring, by 11.2 once (a wrong second). True
+    springs that the scale's spread would take explain only 0.02–0.09 noise variances, short
+    of ``EXPLAINED_MIN``, with ΔBIC up to 25 alone and 78 beside a backlash (whose dead zone
+    acts about zero torque). A loop has a backbone that a spring stands in for: not beside
+    one. The search names a spring alone by its shape only when nothing else passes.
+    """
+    return (member == "housing_compliance" and beside in (None, "backlash")
             and over.delta_bic > BIC_MIN and over.cv_gain > 0)
 
 

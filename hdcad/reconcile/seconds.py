@@ -1,0 +1,89 @@
+"""Whether a second effect earns its place beside another: the share rule of :mod:`.gates`
+and the readings under which a second that explains little of the first's residual is
+still its own effect.
+
+- a transmission error beside another once that one follows its own slow modulation
+  (:func:`beyond_modulation`);
+- a housing spring that the other effect alone leaves to a gear softer than the catalog's
+  spread (:func:`beyond_spread`), or one told from the stiffness scale by its shape
+  (:func:`.springs.by_its_shape`);
+- in an efficiency test, a second beside a temperature dependence with its best viscosity
+  law (:func:`beyond_law`).
+
+References
+----------
+Schwarz, G. (1978) "Estimating the dimension of a model", Ann. Stat. 6: BIC.
+"""
+
+from __future__ import annotations
+
+from . import springs
+from .baseline import COMPLIANCE_SCALE_BOUNDS
+from .fitting import Fit, Problem
+from .gates import BIC_MIN, EXPLAINED_MIN, gate
+from .readings import free_scale
+from .refine import fit_viscosity_law
+from .te_forms import refine_te_order
+
+
+def earns_place(problem: Problem, member: str, other: Fit, fit: Fit, sigma: float, tau: float
+                ) -> tuple[bool, bool]:
+    """(earned, by its shape only): whether ``member`` earns its place in the pair ``fit``
+    over ``other`` (the other member alone), and whether only by the spring's shape."""
+    over = gate(problem, other, fit, sigma, tau)
+    if over.passes(second=True) or over.passes() and (
+            beyond_modulation(problem, member, other, fit, sigma, tau)
+            or beyond_spread(problem, member, other)):
+        return True, False
+    shaped = springs.by_its_shape(member, other.effects[-1], over)
+    return shaped, shaped
+
+
+def beyond_modulation(problem: Problem, member: str, other: Fit, fit: Fit, sigma: float,
+                      tau: float) -> bool:
+    """Whether the transmission error ``member`` still earns its place once the other
+    error follows its own slow modulation (Legendre order chosen by BIC,
+    :func:`.te_forms.refine_te_order`). What a modulated error leaves at the naming order is
+    its own misfit, which the share rule would ask a second harmonic to explain; another
+    harmonic's carrier cannot take that misfit, so the pair, its order chosen the same way,
+    is tested against the modulated one by ΔBIC and explained variance (a blocked
+    cross-validation would judge the Legendre columns' extrapolation into the held-out
+    block, not the harmonic)."""
+    if not (member.startswith("te_") and other.effects[-1].startswith("te_")):
+        return False
+    saved = problem.te_order
+    try:
+        modulated = refine_te_order(problem, other)
+        problem.te_order = saved
+        pair = refine_te_order(problem, fit)
+    finally:
+        problem.te_order = saved
+    g = gate(problem, modulated, pair, sigma, tau)
+    return g.delta_bic > BIC_MIN and g.explained > EXPLAINED_MIN
+
+
+def beyond_spread(problem: Problem, member: str, other: Fit) -> bool:
+    """Whether the housing spring ``member`` is the compliance the other effect alone leaves
+    to a gear softer than the catalog's spread: refitted without the spread's bounds, the
+    other effect's model reads the gear beyond it. The catalog holds the gear within its
+    spread, so the rest is a spring outside the gear, however little of the other's residual
+    it explains (the share rule guards a sliver of the first's misfit, not a bound in force)."""
+    scale = free_scale(problem, other) if member == "housing_compliance" else None
+    return scale is not None and scale > COMPLIANCE_SCALE_BOUNDS[1]
+
+
+def beyond_law(problem: Problem, member: str, other: Fit, fit: Fit, sigma: float,
+               tau: float) -> bool:
+    """Whether ``member`` still earns its place over a temperature dependence that has its best
+    viscosity law (:data:`.efficiency_laws.VISCOSITY_LAWS_C`; Reynolds' names the effects).
+    The laws differ in how the viscosity curves over the temperatures: what Reynolds' leaves
+    of an Andrade or Vogel–Cameron oil is the first effect's own shape, which a low-load
+    factor, also scaling the efficiency, would otherwise be named for."""
+    if other.effects[-1] != "temperature_dependence" or problem.kind != "efficiency":
+        return True
+    saved = problem.viscosity_C
+    try:
+        single, pair = (fit_viscosity_law(problem, model)[0] for model in (other, fit))
+    finally:
+        problem.viscosity_C = saved
+    return gate(problem, single, pair, sigma, tau).passes(second=True)
