@@ -443,11 +443,29 @@ def test_an_output_angle_in_arc_seconds_is_converted():
     assert result["missing_effects"] == []
 
 
-def test_an_input_angle_in_revolutions_is_converted():
+def test_a_transmission_record_under_one_revolution_is_bad_input(tmp_path, capsys):
+    """Half a WG revolution in radians (the output at input / R): no unit reading explains
+    it, and it is too short to name a 1× error: exit 2, the column named, nothing written."""
+    rows = np.array(transmission_rows(), dtype=float)
+    rows = rows[rows[:, 0] <= math.pi]
+    csv = write_csv(tmp_path / "t.csv", COLUMNS["transmission"],
+                    [(f"{a:.9g}", f"{b:.9g}") for a, b in rows])
+    code, _, err = run(capsys, "reconcile", "transmission", csv, "--model", "CSF-32-100-GH",
+                       "--out", tmp_path / "out")
+    assert code == 2
+    assert "input_angle_rad" in err and "WG revolutions" in err
+    assert len(err.strip().splitlines()) == 1
+    assert not (tmp_path / "out").exists()
+
+
+@pytest.mark.parametrize("seed", [11, 7])
+def test_an_input_angle_in_revolutions_is_converted(seed):
     """Suite K's transmission record with the input angle in revolutions was refused as bad
-    input at its held-out score (the output turned 6.28 × input / ratio)."""
+    input at its held-out score (the output turned 6.28 × input / ratio). At seed 7 its
+    4 WG revolutions, read as radians, span 0.64 of one: the least span is checked once the
+    units are read, not before (it was refused as too short)."""
     from truth_runs import bench, named_case
-    case = named_case("k", "k-transmission-decoy_separable-none-input-in-revolutions-000", 11)
+    case = named_case("k", "k-transmission-decoy_separable-none-input-in-revolutions-000", seed)
     result = bench.reconcile_case(case)
     (fix,) = result["measurement_effects"]
     assert fix["column"] == "input_angle_rad" and "revolutions" in fix["reading"]

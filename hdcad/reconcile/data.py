@@ -132,6 +132,12 @@ def _check_torsion(d: dict[str, np.ndarray]) -> None:
 
 
 def _check_transmission(d: dict[str, np.ndarray]) -> None:
+    """Nothing before the units are read: an input angle in revolutions spans 2π times
+    fewer 'radians' (:func:`check_revolutions` once they are)."""
+
+
+def check_revolutions(d: dict[str, np.ndarray]) -> None:
+    """A transmission record with its units read spans ``MIN_WG_REVOLUTIONS`` at least."""
     turns = np.ptp(d["input_angle_rad"]) / (2 * math.pi)
     if turns < MIN_WG_REVOLUTIONS:
         raise InputError("input_angle_rad", f"spans {turns:.2f} WG revolutions; transmission "

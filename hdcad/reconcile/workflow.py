@@ -30,7 +30,7 @@ from . import frames, readings, refine
 from . import regions as rg
 from . import search
 from . import units
-from .data import validate_data
+from .data import check_revolutions, validate_data
 from .fitting import Fit, Problem, fit_model, make_problem, set_rows
 from .gates import BIC_MIN, bic_gain, effective_n
 from .noise import correlation_time, noise_rms
@@ -109,6 +109,8 @@ def _baseline(kind, data, model, catalog, load_inertia_kgm2):
     if kind == "torsion" and fixes:  # kN·m or mrad: keep the reading the catalog fits best
         fixes = [units.torsion_fix(data, fixes, twist)]
     data = units.apply(data, fixes)
+    if kind == "transmission":
+        check_revolutions(data)
     return baselines.build(kind, data, model, catalog, load_inertia_kgm2), fixes
 
 
