@@ -45,6 +45,9 @@ import numpy as np  # noqa: E402
 ROOT = Path(__file__).resolve().parents[1]
 CATALOG_DIR = ROOT / "catalog"
 RMSE_FACTOR = 1.2
+# A suite's own name for a measurement effect that hdcad names otherwise (the same physics):
+# suite H calls the twist encoder's interpolation ripple "encoder_interpolation_error".
+RIG_SYNONYMS = {"encoder_interpolation_error": "encoder_interpolation"}
 
 
 def load_suite(path: Path):
@@ -106,7 +109,8 @@ def score(case, result) -> dict:
     if case.category in ("clean", "decoy_separable"):
         out["false_alarm"] = bool(named)
     if case.category == "decoy_separable" and case.measurement_effects:
-        out["rig_right"] = set(case.measurement_effects) <= set(rig)
+        expected = {RIG_SYNONYMS.get(e, e) for e in case.measurement_effects}
+        out["rig_right"] = expected <= set(rig)
     if case.category == "decoy_equivalent":
         eq = set(case.equivalent_effects)
         out["both_readings"] = bool(eq & (set(named) | readings)) and (

@@ -80,10 +80,10 @@ def refine_damping(problem: Problem, fit: Fit) -> Fit:
     structural damping (:func:`.joint.steady_response`, loss factor η = 2ζ) in place of the
     viscous joint's run-up, kept when it lowers the BIC by more than ``BIC_MIN`` (the same
     parameters) and explains ``EXPLAINED_MIN`` noise variances more (:func:`.gates.beyond`:
-    at thousands of rows a sliver of a viscous joint's misfit passes the BIC alone). A material's loss factor
-    hardly changes with frequency, so structural damping damps the resonance as a viscous
-    ζ = η/2 does but the response off it differently, and it has no free vibration after
-    the resonance: a slow sweep or order-tracked data carry none."""
+    at thousands of rows a sliver of a viscous joint's misfit passes the BIC alone). A
+    material's loss factor hardly changes with frequency, so structural damping damps the
+    resonance as a viscous ζ = η/2 does but the response off it differently, and it has no
+    free vibration after the resonance: a slow sweep or order-tracked data carry none."""
     te = [e for e in fit.effects if e.startswith("te_")]
     if problem.kind != "vibration" or not te or "damping_ratio" not in fit.theta:
         return fit
