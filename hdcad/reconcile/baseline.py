@@ -30,7 +30,7 @@ from ..checks.stiffness import StiffnessCurve
 from ..errors import InputError
 from ..models import GearModel
 from .effects import Parameter
-from .rig import TORQUE_GAIN_KEY
+from .rig import TORQUE_GAIN_KEY, TORQUE_OFFSET_KEY
 
 # FD ratings depend on speed; the rated torque used for α = T/Tr is the 1450 r/min row
 # (table 310-1), the speed hdcad's catalog listing shows for FD models.
@@ -70,21 +70,23 @@ class Baseline:
     def free_columns(self, theta: dict[str, float], rows=slice(None)) -> np.ndarray:
         """The free columns on ``rows`` with the nuisance shape ``theta`` (torsion: the catalog
         curve with corner width ``catalog.corner_width``, read at the true torque when the
-        torque channel's gain ``sensor_gain.torque_gain`` is fitted; the array is kept for
+        torque channel's gain ``sensor_gain.torque_gain`` or its zero offset
+        ``torque_offset.T_off`` is fitted; the array is kept for
         the next call, so it is read only)."""
         if self.curve is None:
             return self.free[rows]
         torque = self.inputs["torque_Nm"]
         width = float(theta.get("catalog.corner_width", 0.0))
         gain = float(theta.get(TORQUE_GAIN_KEY, 0.0))
+        zero = float(theta.get(TORQUE_OFFSET_KEY, 0.0))
         every = isinstance(rows, slice) and rows == slice(None)
-        key = (width, gain, None if every else id(rows))
+        key = (width, gain, zero, None if every else id(rows))
         kept = self._kept.get(key)  # the same torque and rows objects, not merely their ids
         if kept is None or kept[0] is not torque or not (every or kept[1] is rows):
             if len(self._kept) >= _WIDTHS_KEPT:
                 del self._kept[next(iter(self._kept))]
-            kept = (torque, rows, _torsion_columns(self.curve, torque[rows] / (1.0 + gain),
-                                                   width))
+            kept = (torque, rows, _torsion_columns(self.curve,
+                                                   (torque[rows] - zero) / (1.0 + gain), width))
             self._kept[key] = kept
         return kept[2]
 

@@ -14,7 +14,7 @@ from .fitting import Fit, Problem
 from .gates import BIC_MIN, EXPLAINED_MIN, rss_bic_gain
 from .model_columns import drift_labels, parameters_of, stribeck_takes
 from .harmonics import TE_LABELS, frames_of, legendre, te_order_of
-from .rig import RIG_EFFECTS, TORQUE_GAIN_KEY
+from .rig import RIG_EFFECTS, TORQUE_GAIN_KEY, TORQUE_OFFSET_KEY
 from .stribeck import hersey_params
 
 
@@ -52,6 +52,8 @@ def rig_params(problem: Problem, fit: Fit, effect: str) -> dict[str, dict]:
         out["amplitude"] = {"value": math.hypot(b["a"], b["b"]), "unit": unit}
     if effect == "sensor_gain" and TORQUE_GAIN_KEY in fit.theta:
         out["torque_gain"] = {"value": fit.theta[TORQUE_GAIN_KEY], "unit": "-"}
+    if effect == "torque_offset":
+        out["T_off"] = {"value": fit.theta[TORQUE_OFFSET_KEY], "unit": "N·m"}
     return out
 
 
@@ -66,6 +68,10 @@ def rig_entry(problem: Problem, fit: Fit, effect: str) -> dict:
                             f"(torque_gain = {g:.4g}; a shunt or calibration constant): the "
                             f"catalog curve's corners sit at {1 + g:.3f} × T1 and T2 of the "
                             "recorded torque")
+    if "T_off" in params:
+        entry["reading"] = (f"the torque channel's zero is off by {params['T_off']['value']:.4g} "
+                            "N·m (an untared bridge, a tare taken under load): the gear "
+                            "carries the recorded torque less that")
     return entry
 
 

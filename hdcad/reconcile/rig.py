@@ -3,7 +3,7 @@
 They are fitted like the gear effects but reported apart (``measurement_effects``), so a
 reviewer knows whether to fix the rig or the model. Effects of the rig that are exactly a
 nuisance of the catalog model are not separable and are said so instead: a twist sensor's
-gain in torsion reads as the stiffness scale (a torque channel's gain moves the catalog
+gain in torsion reads as the stiffness scale (a torque channel's gain or zero moves the catalog
 curve's corners and is fitted), a torque sensor's gain in efficiency as the level.
 Channels in the wrong unit are found before any fit (:mod:`.units`).
 
@@ -31,6 +31,10 @@ WARM_UP_TAU = (0.2, 20.0)
 # Largest torque-channel gain error read as the rig's [-]: a shunt or calibration constant
 # tens of per cent off; kgf·m against N·m (×9.81) is a unit, found before the fit.
 TORQUE_GAIN_LIMIT = 0.3
+
+# Largest zero offset of the torque channel read as the rig's [T0]: a bridge left untared
+# or a tare taken under a load.
+TORQUE_OFFSET_LIMIT = 0.1
 
 # Harmonics of an encoder's interpolation error: read at the measured angle y = θ + e(θ),
 # the error is still periodic in y, its k-th harmonic (2π·e/p)^(k−1) of the first.
@@ -111,6 +115,17 @@ RIG_EFFECTS: dict[str, Effect] = {e.name: e for e in (
                     Parameter("torque_gain", "-", "relative gain error of the torque channel",
                               -TORQUE_GAIN_LIMIT, TORQUE_GAIN_LIMIT, "1", start=0.0)),
         kinds=("transmission", "torsion")),
+    Effect(
+        name="torque_offset",
+        description=("The torque channel's zero is off (a bridge left untared, a tare taken "
+                     "under load): the gear carries the recorded torque less the offset, so "
+                     "the catalog curve's corners sit at T_off ± T1 and T_off ± T2 of the "
+                     "recorded torque, no longer symmetric about zero; a twist sensor's "
+                     "zero is the baseline's offset instead."),
+        form="torsion: y = s·θ_catalog((T − T_off)/(1 + g_T)) + …",
+        parameters=(Parameter("T_off", "N·m", "zero offset of the torque channel",
+                              -TORQUE_OFFSET_LIMIT, TORQUE_OFFSET_LIMIT, "T0", start=0.0),),
+        kinds=("torsion",)),
 )}
 
 RIG_NAMES = tuple(RIG_EFFECTS)
@@ -134,6 +149,7 @@ def applicable(kind: str) -> tuple[str, ...]:
 KIND_PARAMETERS = {("sensor_gain", "transmission"): ("g",),
                    ("sensor_gain", "torsion"): ("torque_gain",)}
 TORQUE_GAIN_KEY = key_of("sensor_gain", "torque_gain")
+TORQUE_OFFSET_KEY = key_of("torque_offset", "T_off")
 
 
 def _in_kind(name: str, kind: str, params: tuple[Parameter, ...]) -> tuple[Parameter, ...]:
