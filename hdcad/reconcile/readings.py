@@ -21,9 +21,10 @@ from .fitting import Fit, Problem
 # of the rig with time cannot be told apart.
 TIME_TEMPERATURE_CORRELATION = 0.8
 
-# A gear softer than the catalog by at least this share, within the spread, is also read as
-# a series spring (a housing spring of under 1 % of the gear's compliance is not worth a
-# line in the report).
+# A gear that reads softer than the catalog by at least this share without a housing spring
+# is also read as a series spring, or a named spring as that softer gear, within the spread
+# or beyond it (a spring of under 1 % of the gear's compliance is not worth a line in the
+# report).
 SOFTER_READING_MIN = 0.01
 
 # Rig readings that a test of this kind cannot tell from the named gear effect, whatever the
