@@ -8,7 +8,7 @@ computation from the Everett-function sum), and against the properties Mayergoyz
 ch. 1) proves for every Preisach model: return-point memory and wiping out. The reconcile
 cases come from suite G (``truths/truth_g.py``), written by a helper from the contract only
 (Everett-function Preisach and Krasnosel'skii–Pokrovskii loops; an ellipse series with a 4×
-overtone).
+overtone) and suite M (``truths/truth_m.py``: a run-up driven by a triangular 1× error).
 """
 
 from __future__ import annotations
@@ -159,4 +159,16 @@ def test_an_ellipse_series_keeps_its_4x_overtone_under_the_2x_error():
     assert result["missing_effects"] == ["te_2x"]
     assert any("overtones" in note and "4×" in note for note in result["notes"])
     assert not any("4 cycle(s)" in u for u in result["unexplained"])
+    assert result["rmse_after"] <= 1.2 * case.noise_rms
+
+
+def test_a_run_up_keeps_the_overtone_of_a_triangular_1x_error():
+    """Suite M's vibration run-up driven by a triangular 1× error (odd harmonics, the 3× at
+    1/9 of the 1×; seed 11). Its 3× excites the resonance at a third of the 1×'s speed:
+    without the overtone the residual was 1.26σ; kept as te_1x's overtone, passed through
+    the joint like the error itself, it is at the noise (1.01σ, bar 1.2σ as the issue's)."""
+    case = named_case("m", "m-vibration-single-te1x-etd-cycloidal-triangle-001", 11)
+    result = bench.reconcile_case(case)
+    assert result["missing_effects"] == ["te_1x"]
+    assert any("overtones" in note and "3×" in note for note in result["notes"])
     assert result["rmse_after"] <= 1.2 * case.noise_rms

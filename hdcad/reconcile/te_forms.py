@@ -62,12 +62,14 @@ def refine_te_overtones(problem: Problem, fit: Fit) -> Fit:
 
     A wave generator's ellipse is not a pure 2× profile: its series carries 4× and 6×
     beside the 2×, and a runout's 1× its multiples. They are the named error's own
-    harmonics, not effects of their own. Transmission only: in a run-up an overtone would
-    also excite the resonance at its own speed, which the joint's forced response does not
-    separate from the gear's nonlinearity.
+    harmonics, not effects of their own. In a run-up (vibration) each overtone passes
+    through the joint like the error itself and excites the resonance at its own speed
+    (k·f_input = f_n). A joint on the catalog curve, whose nonlinearity makes
+    superharmonics of its own, is tried first (:func:`.refine.refine_spring`); when it is
+    kept, no overtones are chosen.
     """
     allowed = sorted({k for e in fit.effects for k in TE_OVERTONES.get(e, ())})
-    if problem.kind != "transmission" or not allowed:
+    if problem.kind not in ("transmission", "vibration") or not allowed:
         return fit
     shapes = len(nonlinear(problem.kind, fit.effects))
 
