@@ -16,6 +16,8 @@ import numpy as np
 
 from .baseline import STIFFNESS_SPREAD, catalog_twist
 from .fitting import Fit, Problem
+from .gates import BIC_MIN
+from .rig import RIG_EFFECTS
 
 # |correlation| of temperature with test time above which a temperature effect and a drift
 # of the rig with time cannot be told apart.
@@ -172,6 +174,33 @@ def undecided(named: tuple[str, ...], rivals: tuple[str, ...], rmse: dict[str, f
                      f"{each(rivals[0])} or by {each(rivals[1])}: neither is named (the "
                      f"shape {' + '.join(named)}'s formula misses, or either effect; a test "
                      "that separates them decides)"}]
+
+
+def rig_near(rows: list[dict], named: tuple[str, ...], alone: dict[str, float],
+             given: list[dict]) -> list[dict]:
+    """A measurement effect of the rig search's last round (``rows``) that passed the gates
+    with its own signature but came within ``BIC_MIN`` below the best gear effect alone,
+    given beside the first gear effect named (ΔBIC alone over the same model, ``alone``)
+    unless a reading ``given`` already offers it: the gear's reading is kept by less than
+    the naming margin, so the reviewer checks the rig before changing the model (a drift
+    driven by the test's own work builds up on each loading and can read as a loop)."""
+    if not named or named[0] not in alone:
+        return []
+    first = named[0]
+    offered = {r.get("measurement") for r in given if first in r.get("effects", ())}
+    out = []
+    for row in rows:
+        if not row.get("near_gear") or row["effect"] in offered:
+            continue
+        words = RIG_EFFECTS[row["effect"]].description  # its first clause
+        cuts = [i for i in (words.find(c) for c in (":", ";", ". ")) if i > 0]
+        words = words[:min(cuts)] if cuts else words
+        out.append({"effects": [first], "measurement": row["effect"],
+                    "text": f"{words[0].lower()}{words[1:]} explains nearly as much as "
+                            f"{first} (ΔBIC {row['delta_bic']:.1f} against "
+                            f"{alone[first]:.1f}, closer than the naming margin "
+                            f"{BIC_MIN:g}): check the rig before changing the model"})
+    return out
 
 
 def _spring_reading(problem: Problem, stiffness: float, within: bool, named: bool) -> dict:

@@ -89,14 +89,19 @@ def select_rig(problem: Problem, start: Fit, known: dict[str, Fit] | None = None
         gates = {n: gate(problem, current, f, sigma, tau) for n, f in fits.items()}
         alone = {n: gate(problem, current, f, sigma, tau).delta_bic for n, f in singles.items()}
         rival = max(alone.values(), default=-math.inf)
-        ok = {n: g.passes() and g.delta_bic > rival
-              and _rig_signature(problem, n, current, fits[n]) for n, g in gates.items()}
+        # with its own signature, and beating every gear effect alone or coming within
+        # BIC_MIN of the best (then reported beside it as a reading the data barely refuse)
+        signed = {n: g.passes() and g.delta_bic > rival - BIC_MIN
+                  and _rig_signature(problem, n, current, fits[n]) for n, g in gates.items()}
+        ok = {n: signed[n] and gates[n].delta_bic > rival for n in gates}
         twin = {n: alone.get(GEAR_TWIN.get((problem.kind, n)), -math.inf) for n in gates}
         held = {n: ok[n] and g.delta_bic <= twin[n] + BIC_MIN for n, g in gates.items()}
         ok = {n: ok[n] and not held[n] for n in ok}
         table.append([{"effect": n, "delta_bic": g.delta_bic, "cv_gain": g.cv_gain,
                        "explained_var_over_noise": g.explained, "passes": ok[n],
-                       "held_for_twin": held[n]} for n, g in gates.items()])
+                       "held_for_twin": held[n],
+                       "near_gear": signed[n] and g.delta_bic <= rival}
+                      for n, g in gates.items()])
         passing = [n for n in ok if ok[n]]
         if not passing:
             break

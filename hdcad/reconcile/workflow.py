@@ -157,8 +157,11 @@ def reconcile(kind: str, data: dict, model: GearModel, catalog: Catalog,
     with_rig, rig_table, singles = search.select_rig(problem, start, in_frames)
     unselected = _copy(problem)  # the selection sets the named forms on the problem
     best, candidates = search.select_gear(problem, with_rig, singles)
-    problem, with_rig, best, candidates = _gear_twin_instead(
-        problem, unselected, with_rig, best, candidates, _held_for_twin(kind, rig_table))
+    chosen = _gear_twin_instead(problem, unselected, with_rig, best, candidates,
+                                _held_for_twin(kind, rig_table))
+    # the rig search's last round was over the gear search's start unless a twin changed it
+    near = rig_table[-1] if rig_table and chosen[0] is problem else []
+    problem, with_rig, best, candidates = chosen
     final = search.recheck_rig(problem, best.fit if best else with_rig)
     final = refine.refine(problem, _without_outliers(problem, final))
     keep = np.ones(len(base.y), bool)
@@ -182,12 +185,14 @@ def reconcile(kind: str, data: dict, model: GearModel, catalog: Catalog,
     if "sensor_gain" not in final.effects:
         measurement += output_gain_entry(problem, final, sigma, tau)
     nuisances = readings.nuisances(problem, final)
+    given = (readings.equivalent(problem, final, named, nuisances)
+             + readings.undecided(named, rivals, beside, sigma, base.unit)
+             + readings.series_slip(bool(best and best.series_slip))
+             + readings.progressive_spring(bool(best and best.progressive)))
+    alone = {c.effects[0]: c.gate.delta_bic for c in candidates if len(c.effects) == 1}
     return _result(problem, model, start, final, resid0, residual, sigma, tau, keep, steps,
                    candidates, rig_table, measurement, nuisances,
-                   readings.equivalent(problem, final, named, nuisances)
-                   + readings.undecided(named, rivals, beside, sigma, base.unit)
-                   + readings.series_slip(bool(best and best.series_slip))
-                   + readings.progressive_spring(bool(best and best.progressive)))
+                   given + readings.rig_near(near, named, alone, given))
 
 
 def _copy(problem: Problem) -> Problem:
