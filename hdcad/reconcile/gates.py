@@ -35,6 +35,10 @@ BIC_MIN = 10.0
 CV_GAIN_MIN = 0.05
 EXPLAINED_MIN = 0.1
 SECOND_SHARE_MIN = 0.3
+# An effect named on a second try (a loop tried once every effect has failed, a second
+# decided only once the first has its final form) must explain at least the noise variance:
+# a second try must not rest on a marginal gain (a wrong-units decoy passed at 0.13σ²).
+SECOND_TRY_EXPLAINED_MIN = 1.0
 # Loop evidence: branch separation χ² z-score and RMS (in noise RMS) over torque bins.
 LOOP_Z = 5.0
 LOOP_RMS_MIN = 0.5

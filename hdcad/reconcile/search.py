@@ -37,8 +37,8 @@ from dataclasses import replace
 from . import effects as fx
 from . import rig, seconds, springs
 from .fitting import Fit, Problem, fit_model, rss_at
-from .gates import (BIC_MIN, GATE_NOTE, Candidate, Gate, bic_gain, effective_n, gate,
-                    has_evidence, round_noise)
+from .gates import (BIC_MIN, GATE_NOTE, SECOND_TRY_EXPLAINED_MIN, Candidate, Gate, bic_gain,
+                    effective_n, gate, has_evidence, round_noise)
 from .loops import THROUGH_GEAR, preisach_forms, series_plays, series_slip, use_preisach
 
 __all__ = ["BIC_MIN", "GATE_NOTE", "Candidate", "Gate", "gate", "round_noise", "select_gear",
@@ -194,10 +194,6 @@ def select_gear(problem: Problem, start: Fit, singles: dict[str, Fit] | None = N
         best = spring
     return best, out
 
-
-# a loop tried once every effect has failed must explain at least the noise variance: a
-# second try must not rest on a marginal gain (a wrong-units decoy passed at 0.13σ²)
-SECOND_TRY_EXPLAINED_MIN = 1.0
 
 
 def _preisach_single(problem: Problem, start: Fit, singles: dict[str, Fit], pairs: list[Fit],

@@ -8,7 +8,9 @@ still its own effect.
   spread (:func:`beyond_spread`), or one told from the stiffness scale by its shape
   (:func:`.springs.by_its_shape`);
 - in an efficiency test, a second beside a temperature dependence with its best viscosity
-  law (:func:`beyond_law`).
+  law (:func:`beyond_law`);
+- a second left undecided between two beside a loop, decided once the loop has its final
+  form (:func:`decided_after_refining`).
 
 References
 ----------
@@ -19,8 +21,8 @@ from __future__ import annotations
 
 from . import springs
 from .baseline import COMPLIANCE_SCALE_BOUNDS
-from .fitting import Fit, Problem
-from .gates import BIC_MIN, EXPLAINED_MIN, gate
+from .fitting import Fit, Problem, fit_model
+from .gates import BIC_MIN, EXPLAINED_MIN, SECOND_TRY_EXPLAINED_MIN, gate, round_noise
 from .readings import free_scale
 from .refine import fit_viscosity_law
 from .te_forms import refine_te_order
@@ -87,3 +89,28 @@ def beyond_law(problem: Problem, member: str, other: Fit, fit: Fit, sigma: float
     finally:
         problem.viscosity_C = saved
     return gate(problem, single, pair, sigma, tau).passes(second=True)
+
+
+def decided_after_refining(problem: Problem, final: Fit, rivals: tuple[str, ...]
+                           ) -> tuple[str, Fit, dict[str, float]] | None:
+    """(second, fit, ΔBIC of each rival) when exactly one of two seconds left undecided
+    beside the named effect passes the gates for a second beside ``final``, the named model
+    in its final form (a loop refined to a Preisach or friction-element sum, drawn about the
+    catalog curve), and explains at least the noise variance, as any second try must
+    (``SECOND_TRY_EXPLAINED_MIN``); else None.
+
+    Two seconds tie beside a Bouc–Wen loop when both patch what its formula misses of the
+    truth's loop; with the loop in the form that follows it, a play that is there still
+    adds and a spring that is not adds nothing. A loop the final form still misses leaves
+    a little that a play patches too (a Masing loop on a Ramberg–Osgood backbone: 0.14–1.1
+    noise variances), hence the floor on what the second explains."""
+    if len(rivals) != 2:
+        return None
+    fits = {r: fit_model(problem, final.effects + (r,), final.theta) for r in rivals}
+    sigma, tau = round_noise(problem, [final, *fits.values()])
+    gates = {r: gate(problem, final, f, sigma, tau) for r, f in fits.items()}
+    passing = [r for r in rivals if gates[r].passes(second=True)
+               and gates[r].explained >= SECOND_TRY_EXPLAINED_MIN]
+    if len(passing) != 1:
+        return None
+    return passing[0], fits[passing[0]], {r: g.delta_bic for r, g in gates.items()}

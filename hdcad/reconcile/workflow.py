@@ -26,7 +26,7 @@ from scipy.ndimage import median_filter
 from ..catalog import Catalog
 from ..models import GearModel
 from . import baseline as baselines
-from . import frames, readings, refine
+from . import frames, readings, refine, seconds
 from . import regions as rg
 from . import search
 from . import units
@@ -171,13 +171,18 @@ def reconcile(kind: str, data: dict, model: GearModel, catalog: Catalog,
         r = (base.y - fit.prediction)[keep]
         return noise_rms(r) or _rmse(r)
 
+    rivals = best.undecided if best else ()  # undecided seconds, with what each leaves
+    decided = seconds.decided_after_refining(problem, final, rivals)
+    if decided:
+        final, rivals = decided[1], ()
+        best = replace(best, effects=best.effects + (decided[0],), undecided=())
+        problem.notes.append(_decided_note(decided))
     named = _by_weight(best.effects, candidates) if best else ()
     resid0 = (base.y - start.prediction)
     residual = base.y - final.prediction
     sigma = sigma_of(final)
     tau = correlation_time(residual[keep])
     steps = _steps(problem, named, candidates, final, keep)
-    rivals = best.undecided if best else ()  # undecided seconds, with what each leaves
     beside = _rmse_beside(problem, final, rivals, keep)
     measurement = [f.as_dict() for f in fixes] + [
         rig_entry(problem, final, e)
@@ -193,6 +198,16 @@ def reconcile(kind: str, data: dict, model: GearModel, catalog: Catalog,
     return _result(problem, model, start, final, resid0, residual, sigma, tau, keep, steps,
                    candidates, rig_table, measurement, nuisances,
                    given + readings.rig_near(near, named, alone, given))
+
+
+def _decided_note(decided: tuple[str, Fit, dict[str, float]]) -> str:
+    second, _, gains = decided
+    other = next(r for r in gains if r != second)
+    return (f"{second} named once the loop took its final form: beside the parametric loop "
+            f"it and {other} fitted about equally (ΔBIC within {search.SECOND_AMBIGUITY:.0%}); "
+            f"beside the final loop {second} adds ΔBIC {gains[second]:.1f}, passes the gates "
+            f"for a second and explains at least the noise variance; {other} adds "
+            f"{gains[other]:.1f} and does not")
 
 
 def _copy(problem: Problem) -> Problem:

@@ -1,0 +1,46 @@
+"""A second effect left undecided between two beside a loop, decided once the loop has its
+final form (:func:`hdcad.reconcile.seconds.decided_after_refining`).
+
+Beside a Bouc–Wen loop a play and a housing spring can fit about equally (pairs within 5 %
+in ΔBIC) when both patch what the loop's formula misses of the truth's loop; the second is
+then left undecided. With the loop refined to the form that follows the data (a Preisach or
+friction-element sum, drawn about the catalog curve), a play that is there still adds and a
+spring that is not adds nothing. The cases come from suites H and M (``truths/truth_h.py``,
+``truth_m.py``, each written by a helper from the contract only) and B (``truth_b.py``).
+"""
+
+from __future__ import annotations
+
+import pytest
+from truth_runs import bench, named_case
+
+DECIDED = "named once the loop took its final form"
+
+
+@pytest.mark.parametrize("suite, name, before", [
+    # seed 11, 2 per cell: a Zener loop with an elastic-ramp Oldham play left 3.39σ with the
+    # second undecided, a Davidenkov loop with an arctan take-up 1.82σ
+    ("h", "h-torsion-pair-hysteresis-backlash-zener+ramp-001", 3.39),
+    ("m", "m-torsion-pair-hysteresis+backlash-davidenkov+cauchy-000", 1.82),
+])
+def test_a_play_beside_a_loop_is_named_once_the_loop_has_its_final_form(suite, name, before):
+    """Both of the pair are named, the note says why, and the fit is within 1.2σ of the
+    true noise (the issue's bar; before: ``before`` σ)."""
+    case = named_case(suite, name, 11)
+    result = bench.reconcile_case(case)
+    assert set(result["missing_effects"]) == {"hysteresis", "backlash"}
+    assert any(DECIDED in note for note in result["notes"])
+    assert not any("undecided" in r for r in result["equivalent_readings"])
+    assert result["rmse_after"] <= 1.2 * case.noise_rms < before * case.noise_rms
+
+
+def test_a_play_that_explains_less_than_the_noise_stays_undecided():
+    """Suite B's Bouc–Wen n = 3 single (seed 11, 2 per cell): beside the loop in its final
+    form a play passes the other gates for a second (ΔBIC 171) but explains 0.19 noise
+    variances, under the noise variance any second try must explain; the second stays
+    undecided and only the loop is named."""
+    case = named_case("b", "b-torsion-single-hysteresis-boucwen3-001", 11)
+    result = bench.reconcile_case(case)
+    assert result["missing_effects"] == ["hysteresis"]
+    assert not any(DECIDED in note for note in result["notes"])
+    assert any(r.get("undecided") for r in result["equivalent_readings"])
