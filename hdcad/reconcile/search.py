@@ -195,7 +195,6 @@ def select_gear(problem: Problem, start: Fit, singles: dict[str, Fit] | None = N
     return best, out
 
 
-
 def _preisach_single(problem: Problem, start: Fit, singles: dict[str, Fit], pairs: list[Fit],
                      out: list[Candidate]) -> Candidate | None:
     """When no effect passes: the hysteresis as a Preisach relay sum (in its best form),
