@@ -21,7 +21,7 @@ from __future__ import annotations
 
 from . import springs
 from .baseline import COMPLIANCE_SCALE_BOUNDS
-from .fitting import Fit, Problem, fit_model
+from .fitting import Fit, Problem
 from .gates import BIC_MIN, EXPLAINED_MIN, SECOND_TRY_EXPLAINED_MIN, gate, round_noise
 from .readings import free_scale
 from .refine import fit_viscosity_law
@@ -91,25 +91,25 @@ def beyond_law(problem: Problem, member: str, other: Fit, fit: Fit, sigma: float
     return gate(problem, single, pair, sigma, tau).passes(second=True)
 
 
-def decided_after_refining(problem: Problem, final: Fit, rivals: tuple[str, ...]
+def decided_after_refining(problem: Problem, final: Fit, fits: dict[str, Fit]
                            ) -> tuple[str, Fit, dict[str, float]] | None:
     """(second, fit, ΔBIC of each rival) when exactly one of two seconds left undecided
-    beside the named effect passes the gates for a second beside ``final``, the named model
-    in its final form (a loop refined to a Preisach or friction-element sum, drawn about the
-    catalog curve), and explains at least the noise variance, as any second try must
-    (``SECOND_TRY_EXPLAINED_MIN``); else None.
+    beside the named effect (``fits``: each added to ``final``, by its name) passes the
+    gates for a second beside ``final``, the named model in its final form (a loop refined
+    to a Preisach or friction-element sum, drawn about the catalog curve), and explains at
+    least the noise variance, as any second try must (``SECOND_TRY_EXPLAINED_MIN``); else
+    None.
 
     Two seconds tie beside a Bouc–Wen loop when both patch what its formula misses of the
     truth's loop; with the loop in the form that follows it, a play that is there still
     adds and a spring that is not adds nothing. A loop the final form still misses leaves
     a little that a play patches too (a Masing loop on a Ramberg–Osgood backbone: 0.14–1.1
     noise variances), hence the floor on what the second explains."""
-    if len(rivals) != 2:
+    if len(fits) != 2:
         return None
-    fits = {r: fit_model(problem, final.effects + (r,), final.theta) for r in rivals}
     sigma, tau = round_noise(problem, [final, *fits.values()])
     gates = {r: gate(problem, final, f, sigma, tau) for r, f in fits.items()}
-    passing = [r for r in rivals if gates[r].passes(second=True)
+    passing = [r for r in fits if gates[r].passes(second=True)
                and gates[r].explained >= SECOND_TRY_EXPLAINED_MIN]
     if len(passing) != 1:
         return None

@@ -171,19 +171,24 @@ def reconcile(kind: str, data: dict, model: GearModel, catalog: Catalog,
         r = (base.y - fit.prediction)[keep]
         return noise_rms(r) or _rmse(r)
 
-    rivals = best.undecided if best else ()  # undecided seconds, with what each leaves
-    decided = seconds.decided_after_refining(problem, final, rivals)
+    # undecided seconds, each added to the named model in its final form (a loop refined to
+    # a Preisach or friction-element sum keeps that form)
+    rivals = best.undecided if best else ()
+    beside_fits = {r: fit_model(problem, final.effects + (r,), final.theta) for r in rivals}
+    decided = seconds.decided_after_refining(problem, final, beside_fits)
     if decided:
-        final, rivals = decided[1], ()
+        final, beside_fits = decided[1], {}
         best = replace(best, effects=best.effects + (decided[0],), undecided=())
         problem.notes.append(_decided_note(decided))
-    named = _by_weight(best.effects, candidates) if best else ()
+    rivals = tuple(beside_fits)
+    alone = {c.effects[0]: c.gate.delta_bic for c in candidates if len(c.effects) == 1}
+    named = _by_weight(best.effects, alone) if best else ()
     resid0 = (base.y - start.prediction)
     residual = base.y - final.prediction
     sigma = sigma_of(final)
     tau = correlation_time(residual[keep])
     steps = _steps(problem, named, candidates, final, keep)
-    beside = _rmse_beside(problem, final, rivals, keep)
+    beside = {r: _rmse((base.y - f.prediction)[keep]) for r, f in beside_fits.items()}
     measurement = [f.as_dict() for f in fixes] + [
         rig_entry(problem, final, e)
         for e in final.effects if e in search.rig.RIG_EFFECTS]
@@ -194,7 +199,6 @@ def reconcile(kind: str, data: dict, model: GearModel, catalog: Catalog,
              + readings.undecided(named, rivals, beside, sigma, base.unit)
              + readings.series_slip(bool(best and best.series_slip))
              + readings.progressive_spring(bool(best and best.progressive)))
-    alone = {c.effects[0]: c.gate.delta_bic for c in candidates if len(c.effects) == 1}
     return _result(problem, model, start, final, resid0, residual, sigma, tau, keep, steps,
                    candidates, rig_table, measurement, nuisances,
                    given + readings.rig_near(near, named, alone, given))
@@ -260,20 +264,10 @@ def _held_for_twin(kind: str, table: list[list[dict]]) -> tuple[str, ...]:
                  if row.get("held_for_twin") and (kind, row["effect"]) in search.TWIN_RETRIED)
 
 
-def _rmse_beside(problem: Problem, final: Fit, rivals: tuple[str, ...], keep
-                 ) -> dict[str, float]:
-    """RMSE on the kept rows with each undecided second ``rivals`` added to the named model
-    in its final form (a loop refined to a Preisach or friction-element sum keeps that form),
-    by the second's name."""
-    fits = {r: fit_model(problem, final.effects + (r,), final.theta) for r in rivals}
-    return {r: _rmse((problem.base.y - f.prediction)[keep]) for r, f in fits.items()}
-
-
-def _by_weight(effects: tuple[str, ...], candidates) -> tuple[str, ...]:
-    """The named gear effects, the one that explains the most alone (ΔBIC) first: a pair's
-    order otherwise follows the search (a play read again as a stiffening spring keeps the
-    play's place)."""
-    alone = {c.effects[0]: c.gate.delta_bic for c in candidates if len(c.effects) == 1}
+def _by_weight(effects: tuple[str, ...], alone: dict[str, float]) -> tuple[str, ...]:
+    """The named gear effects, the one that explains the most alone (ΔBIC, ``alone``) first:
+    a pair's order otherwise follows the search (a play read again as a stiffening spring
+    keeps the play's place)."""
     return tuple(sorted(effects, key=lambda e: -alone.get(e, math.inf)))
 
 
