@@ -162,6 +162,34 @@ def test_a_play_held_by_friction_is_crossed_past_its_holding_torque():
     assert result.rmse_after == pytest.approx(sigma, rel=0.1)
 
 
+def test_a_held_play_starts_where_the_last_handling_left_it():
+    """The same held play (0.2 mrad, ±6 N·m), but the record starts with it at its centre,
+    where friction keeps it until the load first passes +6 N·m (the first branch's form
+    puts it at the unloading flank, 50 µrad = 25× the noise away): its start position is
+    fitted, found within 10 µrad of the centre (5× the noise over the ~13 rows before the
+    hold is passed), and the residual is left at the noise."""
+    from hdcad.catalog import load_catalog
+    from hdcad.models import resolve
+    from hdcad.reconcile import reconcile
+    from hdcad.reconcile.baseline import catalog_twist, stiffness_curve
+    catalog = load_catalog()
+    model = resolve("CSF-32-100-GH", catalog)
+    knots = [0.0, 137.0, -137.0, 137.0, -137.0, 0.0]
+    torque = np.interp(np.linspace(0, 5, 1500), np.arange(6), knots)
+    direction = np.sign(np.gradient(torque))
+    play = 1e-4 * np.tanh((torque - 6.0 * direction) / 1.5)
+    play[:np.argmax(np.abs(torque) > 6.0)] = 0.0          # centred until first passed
+    sigma = 2e-6
+    twist = (catalog_twist(stiffness_curve(model)[0], torque, 5.0) + play
+             + sigma * np.random.default_rng(4).standard_normal(len(torque)))
+    result = reconcile("torsion", {"torque_Nm": torque, "twist_rad": twist}, model, catalog)
+    assert result.missing_effects == ["backlash"]
+    start = result.steps[0].params["start_position"]
+    assert abs(start["value"]) < 1e-5 and start["unit"] == "rad"
+    assert any("the record starts with the play at" in n for n in result.notes)
+    assert result.rmse_after == pytest.approx(sigma, rel=0.1)
+
+
 @pytest.mark.parametrize("suite,seed,name,left", [
     # friction-held play: 2.16× the noise left by a play crossed at zero torque, now 1.02×
     ("e", 7, "e-torsion-single-backlash-friction-play-012", 1.2),

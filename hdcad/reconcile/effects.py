@@ -234,6 +234,15 @@ def backlash_twist(torque_Nm: np.ndarray, lost_motion_rad: float, width_Nm: floa
     return 0.5 * lost_motion_rad * np.tanh(torque_Nm / width_Nm)
 
 
+def before_first_hold(torque_Nm: np.ndarray, hold_Nm: float) -> np.ndarray:
+    """True on the rows before the torque first passes ±T_h [N·m], in record order: a play
+    that friction holds stays where the last handling left it until then (anywhere within
+    its clearance), so its twist there is a position of its own, not a flank's."""
+    passed = np.abs(np.asarray(torque_Nm, dtype=float)) > hold_Nm
+    first = int(np.argmax(passed)) if passed.any() else len(passed)
+    return np.arange(len(passed)) < first
+
+
 def branch_direction(n: int, branches: tuple[np.ndarray, int]) -> np.ndarray:
     """+1 on the rows of loading branches, −1 on unloading ones (``branches`` as from
     :func:`turning_points`: branch start indices and the first branch's direction)."""

@@ -116,6 +116,9 @@ class Problem:
     # torque at which a play is crossed, as a share of T0 (a steady torque preloads one
     # flank: a slider's weight), 0 while naming, fitted once backlash is (refine.refine_play)
     play_bias: float = 0.0
+    # a held play's position before the load first passes the holding torque (where the
+    # last handling left it): a free twist, once the hold is kept (refine.refine_play)
+    play_start: bool = False
     # a play's lost motion along the record: its Legendre order (wear, warmth) or one step's
     # position (an input locked at another angle), by BIC once named (refine_play_drift)
     play_drift: int = 0

@@ -90,12 +90,16 @@ def columns(problem: Problem, effects: tuple[str, ...], theta: dict[str, float],
                 C = _creep_states(problem, rows)
                 add(name, [f"creep_{k}" for k in range(C.shape[1])], C, 0.0)
         elif name == "backlash":
-            torque = inp["torque_Nm"] - problem.play_bias * problem.scales["T0"]
-            if problem.play_hold:
-                torque = torque - inp["branch_direction"] * (
-                    problem.play_hold * problem.scales["T0"])
-            play = fx.backlash_twist(torque, 1.0, th["T_w"])
+            t0 = problem.scales["T0"]
+            torque = inp["torque_Nm"] - problem.play_bias * t0
+            held = torque - inp["branch_direction"] * (problem.play_hold * t0)
+            play = fx.backlash_twist(held, 1.0, th["T_w"])
+            if problem.play_start:  # held where it was until the load first passes T_h
+                start = fx.before_first_hold(torque, problem.play_hold * t0)
+                play = np.where(start, 0.0, play)
             add(name, ["lost_motion"], play, 0.0)
+            if problem.play_start:
+                add(name, ["start_position"], start.astype(float))
             if problem.play_drift:  # the lost motion along the record: P1 … P_K of its position
                 add(name, drift_labels(problem.play_drift), np.column_stack(
                     [p * play for p in legendre(inp["record_position"], problem.play_drift)[1:]]))

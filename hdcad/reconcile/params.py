@@ -237,6 +237,8 @@ def effect_params(problem: Problem, fit: Fit, effect: str) -> dict[str, dict]:
         out["slip_compliance"] = (b["z_sat"] / th["T_s"], "rad/(N·m)")
     elif effect == "backlash":
         out = {"lost_motion": (b["lost_motion"], "rad"), "T_w": (th["T_w"], "N·m")}
+        if problem.play_start:  # where the record found it, before the load passed T_h
+            out["start_position"] = (b["start_position"], "rad")
         if problem.play_drift or problem.play_step is not None:  # where it starts and ends
             start, end, _, _ = play_along_record(problem, fit)
             out.update({"lost_motion_at_start": (start, "rad"),

@@ -134,13 +134,32 @@ def refine_play(problem: Problem, fit: Fit) -> Fit:
     """A named backlash whose play friction holds at one side until the load passes a
     holding torque T_h in the new direction (a loop at zero torque of area b·2T_h), then one
     crossed at a torque T_c off zero (a steady torque preloads one flank), each one
-    parameter more, kept when BIC prefers it (:func:`_one_more`)."""
+    parameter more, kept when BIC prefers it (:func:`_one_more`). A held play's position
+    before the load first passes T_h is where the last handling left it, anywhere within
+    its clearance: fitted (one term more) where BIC prefers it to the flank the first
+    branch's form would put it at."""
     if "backlash" not in fit.effects or problem.branches is None:
         return fit
     t0 = problem.scales["T0"]
-    fit = _one_more(problem, fit, "play_hold", _PLAY_HOLD_BOUNDS, lambda h: (
+    # the hold searched with the play's start position on the first branch's flank and free
+    # (one linear term): the search is not convex, so each start is searched on its own
+    tries = {}
+    for start in (False, True):
+        problem.play_start = start
+        tries[start] = _searched(problem, fit, "play_hold", _PLAY_HOLD_BOUNDS)
+    start = bic_best({s: (w.rss, int(s)) for s, (_, w) in tries.items()},
+                     effective_n(problem, fit.residual(problem)))
+    problem.play_start = start
+    fit = _kept(problem, fit, "play_hold", *tries[start], lambda h: (
         f"backlash: the play is held by friction until the load passes {h * t0:.3g} N·m "
-        "in the new direction"))
+        "in the new direction"), terms=1 + int(start))
+    problem.play_start = bool(start and problem.play_hold)
+    if problem.play_start:
+        b = {label[1]: v for label, v in zip(fit.labels, fit.beta) if label[0] == "backlash"}
+        problem.notes.append(
+            f"backlash: the record starts with the play at {b['start_position']:.3g} rad "
+            f"(its lost motion {b['lost_motion']:.3g} rad), where the last handling left "
+            "it, until the load first passes the holding torque")
     return _one_more(problem, fit, "play_bias", _PLAY_BIAS_BOUNDS, lambda c: (
         f"backlash: the play is crossed at {c * t0:.3g} N·m, not at zero torque (a steady "
         "torque preloads one flank: a slider's weight on a horizontal axis, a drag)"))
@@ -328,6 +347,13 @@ def _one_more(problem: Problem, fit: Fit, attribute: str, bounds: tuple[float, f
     """``fit`` with one more term, the scalar ``problem.attribute`` searched within
     ``bounds`` with the shapes refitted, kept (and ``note(value)`` added) when BIC with the
     effective sample size prefers it; else ``fit`` with the attribute back at 0."""
+    return _kept(problem, fit, attribute, *_searched(problem, fit, attribute, bounds), note)
+
+
+def _searched(problem: Problem, fit: Fit, attribute: str, bounds: tuple[float, float]
+              ) -> tuple[float, Fit]:
+    """(value, fit) of the scalar ``problem.attribute`` searched within ``bounds`` with the
+    shapes refitted (the attribute is left at the value)."""
 
     tried: dict[float, Fit] = {}
 
@@ -346,11 +372,20 @@ def _one_more(problem: Problem, fit: Fit, attribute: str, bounds: tuple[float, f
                             options={"xatol": 1e-3, "maxiter": 20})
     wider = trial(found.x)
     setattr(problem, attribute, float(found.x))
+    return float(found.x), wider
+
+
+def _kept(problem: Problem, fit: Fit, attribute: str, value: float, wider: Fit, note,
+          terms: int = 1) -> Fit:
+    """``wider`` (``problem.attribute`` at ``value``, ``terms`` more than ``fit``) when BIC
+    with the effective sample size prefers it, with ``note(value)`` added; else ``fit`` with
+    the attribute back at 0."""
+    setattr(problem, attribute, value)
     n_eff = effective_n(problem, wider.residual(problem))
-    if bic_best({False: (fit.rss, 0), True: (wider.rss, 1)}, n_eff) is False:
+    if bic_best({False: (fit.rss, 0), True: (wider.rss, terms)}, n_eff) is False:
         setattr(problem, attribute, 0.0)
         return fit
-    problem.notes.append(note(found.x))
+    problem.notes.append(note(value))
     # the terms earlier refinements added to ``fit`` stay (the refit counts its shapes only)
     earlier = fit.shapes - shapes_in_use(problem, fit.effects, fit.theta)
     return replace(wider, n_params=wider.n_params + 1 + max(earlier, 0))
