@@ -15,7 +15,7 @@ Rows flagged as gross outliers are left out of the fit (a hard-redescending robu
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 from scipy.optimize import least_squares
@@ -150,6 +150,13 @@ class Problem:
             self._plane = preisach.PreisachPlane(self.base.inputs["torque_Nm"],
                                                  self.scales["T0"])
         return self._plane
+
+
+def copy_problem(problem: Problem) -> Problem:
+    """``problem`` with its own notes and settings (its data and caches shared)."""
+    return replace(problem, notes=list(problem.notes), scales=dict(problem.scales),
+                   te_sidebands=dict(problem.te_sidebands), te_frames=dict(problem.te_frames),
+                   te_second_frames=dict(problem.te_second_frames))
 
 
 @dataclass

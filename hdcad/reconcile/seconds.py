@@ -10,7 +10,9 @@ still its own effect.
 - in an efficiency test, a second beside a temperature dependence with its best viscosity
   law (:func:`beyond_law`);
 - a second left undecided between two beside a loop, decided once the loop has its final
-  form (:func:`decided_after_refining`).
+  form (:func:`decided_after_refining`);
+- a second named beside a loop that gives way to its rival once the loop has its final
+  form (:func:`swapped_after_refining`).
 
 References
 ----------
@@ -19,12 +21,15 @@ Schwarz, G. (1978) "Estimating the dimension of a model", Ann. Stat. 6: BIC.
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 from . import springs
 from .baseline import COMPLIANCE_SCALE_BOUNDS
-from .fitting import Fit, Problem
-from .gates import BIC_MIN, EXPLAINED_MIN, SECOND_TRY_EXPLAINED_MIN, gate, round_noise
+from .fitting import Fit, Problem, copy_problem, fit_model
+from .gates import (BIC_MIN, EXPLAINED_MIN, SECOND_TRY_EXPLAINED_MIN, Candidate, beyond, gate,
+                    round_noise)
 from .readings import free_scale
-from .refine import fit_viscosity_law
+from .refine import fit_viscosity_law, refine_play
 from .te_forms import refine_te_order
 
 
@@ -114,3 +119,42 @@ def decided_after_refining(problem: Problem, final: Fit, fits: dict[str, Fit]
     if len(passing) != 1:
         return None
     return passing[0], fits[passing[0]], {r: g.delta_bic for r, g in gates.items()}
+
+
+# the second beside a loop and the one it may give way to: a play and a series spring
+RIVAL_SECONDS = {"backlash": "housing_compliance", "housing_compliance": "backlash"}
+
+
+def swapped_after_refining(problem: Problem, final: Fit, best: Candidate | None, start: Fit
+                           ) -> tuple[Problem, Fit, Candidate] | None:
+    """(problem, fit, candidate) of the named model with its second replaced by the rival
+    (:data:`RIVAL_SECONDS`) when, beside the loop in its final form, the rival (a play in
+    its own final form: held by friction, its start free) lowers the BIC by more than
+    ``BIC_MIN`` and explains ``SECOND_TRY_EXPLAINED_MIN`` noise variances more than the
+    second named; else None. ``start`` is the model the gear effects were added to.
+
+    A play taken up over a wide band of torque and a spring that stiffens read alike
+    beside a Bouc–Wen loop, as does a friction-held play beside a linear spring whose
+    shape patches what the loop's formula misses; the loop's final form (a Preisach or
+    friction-element sum) misses less, and the play then shows as a play."""
+    named = [e for e in final.effects if e in RIVAL_SECONDS]
+    if best is None or "hysteresis" not in final.effects or len(named) != 1:
+        return None
+    second, rival = named[0], RIVAL_SECONDS[named[0]]
+    trial = copy_problem(problem)
+    effects = tuple(rival if e == second else e for e in final.effects)
+    fit = fit_model(trial, effects, final.theta)
+    if rival == "backlash":
+        fit = refine_play(trial, fit)
+    if not beyond(trial, final, fit, explained_min=SECOND_TRY_EXPLAINED_MIN):
+        return None
+    gain = gate(trial, final, fit, *round_noise(trial, [final, fit])).delta_bic
+    trial.notes = [n for n in trial.notes if not n.startswith(f"{second}:")] + [
+        f"{rival} in place of {second}, named beside the loop during the selection: beside "
+        f"the loop in its final form {rival} fits better by ΔBIC {gain:.1f} and explains at "
+        "least the noise variance more"]
+    gear = tuple(rival if e == second else e for e in best.effects)
+    sigma, tau = round_noise(trial, [start, fit])
+    return trial, fit, replace(best, effects=gear, fit=fit, gate=gate(trial, start, fit, sigma,
+                                                                       tau),
+                               progressive=False, by_shape=False, undecided=())

@@ -31,7 +31,7 @@ from . import regions as rg
 from . import search
 from . import units
 from .data import check_revolutions, validate_data
-from .fitting import Fit, Problem, fit_model, make_problem, set_rows
+from .fitting import Fit, Problem, copy_problem, fit_model, make_problem, set_rows
 from .gates import BIC_MIN, bic_gain, effective_n
 from .noise import correlation_time, noise_rms
 from .params import effect_form, effect_params, output_gain_entry, rig_entry
@@ -155,7 +155,7 @@ def reconcile(kind: str, data: dict, model: GearModel, catalog: Catalog,
     start = _start(problem)
     in_frames = frames.choose_frames(problem, start)
     with_rig, rig_table, singles = search.select_rig(problem, start, in_frames)
-    unselected = _copy(problem)  # the selection sets the named forms on the problem
+    unselected = copy_problem(problem)  # the selection sets the named forms on the problem
     best, candidates = search.select_gear(problem, with_rig, singles)
     chosen = _gear_twin_instead(problem, unselected, with_rig, best, candidates,
                                 _held_for_twin(kind, rig_table))
@@ -180,6 +180,10 @@ def reconcile(kind: str, data: dict, model: GearModel, catalog: Catalog,
         final, beside_fits = decided[1], {}
         best = replace(best, effects=best.effects + (decided[0],), undecided=())
         problem.notes.append(_decided_note(decided))
+    swapped = seconds.swapped_after_refining(problem, final, best, with_rig)
+    if swapped:
+        problem, final, best = swapped
+        candidates = candidates + [best]
     rivals = tuple(beside_fits)
     alone = {c.effects[0]: c.gate.delta_bic for c in candidates if len(c.effects) == 1}
     named = _by_weight(best.effects, alone) if best else ()
@@ -212,13 +216,6 @@ def _decided_note(decided: tuple[str, Fit, dict[str, float]]) -> str:
             f"beside the final loop {second} adds ΔBIC {gains[second]:.1f}, passes the gates "
             f"for a second and explains at least the noise variance; {other} adds "
             f"{gains[other]:.1f} and does not")
-
-
-def _copy(problem: Problem) -> Problem:
-    """``problem`` with its own notes and settings (its data and caches shared)."""
-    return replace(problem, notes=list(problem.notes), scales=dict(problem.scales),
-                   te_sidebands=dict(problem.te_sidebands), te_frames=dict(problem.te_frames),
-                   te_second_frames=dict(problem.te_second_frames))
 
 
 def _gear_twin_instead(problem: Problem, unselected: Problem, with_rig: Fit, best,
