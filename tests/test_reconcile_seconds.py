@@ -1,6 +1,8 @@
 """A second effect beside a loop, weighed again once the loop has its final form: one left
 undecided between two (:func:`hdcad.reconcile.seconds.decided_after_refining`), and one
-named that gives way to its rival (:func:`hdcad.reconcile.seconds.swapped_after_refining`).
+named that gives way to its rival (:func:`hdcad.reconcile.seconds.swapped_after_refining`),
+and a loop named beside a play that the play in its final form leaves nothing to
+(:func:`hdcad.reconcile.seconds.dropped_after_refining`).
 
 Beside a Bouc–Wen loop a play and a housing spring can fit about equally (pairs within 5 %
 in ΔBIC) when both patch what the loop's formula misses of the truth's loop; the second is
@@ -73,3 +75,17 @@ def test_a_spring_beside_a_loop_gives_way_to_the_play_once_the_loop_has_its_fina
     assert not any(r.get("reading") == "progressive_spring"
                    for r in result["equivalent_readings"])
     assert result["rmse_after"] <= 1.2 * case.noise_rms < before * case.noise_rms
+
+
+def test_a_loop_beside_a_held_play_is_dropped_once_the_play_has_its_final_form():
+    """Suite I's play held by back-driving friction, alone (seed 11, 2 per cell): while
+    effects are named the play crosses at zero torque and a loop is named beside it to take
+    the held play's own loop; beside the play held and started freely the loop adds ΔBIC
+    −6.1 and is dropped (true loops beside plays, seeds 7 and 11 at 2 per cell, add 155 or
+    more). Only the play is named, with the fit at the noise."""
+    case = named_case("i", "i-torsion-single-backlash-backdrive-held-play-001", 11)
+    result = bench.reconcile_case(case)
+    assert result["missing_effects"] == ["backlash"]
+    assert any(note.startswith("hysteresis, named beside the play") for note in result["notes"])
+    assert any("held by friction" in note for note in result["notes"])
+    assert result["rmse_after"] <= 1.2 * case.noise_rms

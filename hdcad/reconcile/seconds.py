@@ -12,7 +12,8 @@ still its own effect.
 - a second left undecided between two beside a loop, decided once the loop has its final
   form (:func:`decided_after_refining`);
 - a second named beside a loop that gives way to its rival once the loop has its final
-  form (:func:`swapped_after_refining`).
+  form (:func:`swapped_after_refining`), and a loop named beside a play that adds too
+  little once the play has its own (:func:`dropped_after_refining`).
 
 References
 ----------
@@ -29,7 +30,7 @@ from .fitting import Fit, Problem, copy_problem, fit_model
 from .gates import (BIC_MIN, EXPLAINED_MIN, SECOND_TRY_EXPLAINED_MIN, Candidate, beyond, gate,
                     round_noise)
 from .readings import free_scale
-from .refine import fit_viscosity_law, refine_play
+from .refine import fit_viscosity_law, refine_play, refine_play_drift
 from .te_forms import refine_te_order
 
 
@@ -158,3 +159,31 @@ def swapped_after_refining(problem: Problem, final: Fit, best: Candidate | None,
     return trial, fit, replace(best, effects=gear, fit=fit, gate=gate(trial, start, fit, sigma,
                                                                        tau),
                                progressive=False, by_shape=False, undecided=())
+
+
+def dropped_after_refining(problem: Problem, final: Fit, best: Candidate | None, start: Fit
+                           ) -> tuple[Problem, Fit, Candidate] | None:
+    """(problem, fit, candidate) of the play alone in its final form (held by friction, its
+    start free) when the loop named as its second no longer passes the gates for a second
+    beside it; else None. ``start`` is the model the gear effects were added to.
+
+    While effects are named a play crosses at zero torque; one that friction holds makes a
+    loop of its own (area b·2T_h), which a loop named beside it takes."""
+    if best is None or best.effects != ("backlash", "hysteresis"):
+        return None
+    # the play's final form found again without the loop
+    trial = replace(copy_problem(problem), play_hold=0.0, play_start=False, play_bias=0.0,
+                    play_drift=0, play_step=None)
+    trial.notes = [n for n in trial.notes if not n.startswith(("hysteresis", "backlash:"))]
+    effects = tuple(e for e in final.effects if e != "hysteresis")
+    fit = refine_play_drift(trial, refine_play(trial, fit_model(trial, effects, final.theta)))
+    loop = gate(trial, fit, final, *round_noise(trial, [fit, final]))
+    if loop.passes(second=True):
+        return None
+    trial.notes += [
+        f"hysteresis, named beside the play during the selection, is not kept: beside the "
+        f"play in its final form it adds ΔBIC {loop.delta_bic:.1f} and does not pass the "
+        "gates for a second"]
+    return trial, fit, replace(best, effects=("backlash",), fit=fit,
+                               gate=gate(trial, start, fit, *round_noise(trial, [start, fit])),
+                               undecided=(), series_slip=False)

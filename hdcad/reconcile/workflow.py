@@ -180,10 +180,11 @@ def reconcile(kind: str, data: dict, model: GearModel, catalog: Catalog,
         final, beside_fits = decided[1], {}
         best = replace(best, effects=best.effects + (decided[0],), undecided=())
         problem.notes.append(_decided_note(decided))
-    swapped = seconds.swapped_after_refining(problem, final, best, with_rig)
-    if swapped:
-        problem, final, best = swapped
-        candidates = candidates + [best]
+    changed = (seconds.swapped_after_refining(problem, final, best, with_rig)
+               or seconds.dropped_after_refining(problem, final, best, with_rig))
+    if changed:  # the second weighed again beside the named model's final form
+        problem, final, best = changed
+        candidates = candidates + [best] * (best.effects not in {c.effects for c in candidates})
     rivals = tuple(beside_fits)
     alone = {c.effects[0]: c.gate.delta_bic for c in candidates if len(c.effects) == 1}
     named = _by_weight(best.effects, alone) if best else ()
