@@ -155,10 +155,9 @@ def swapped_after_refining(problem: Problem, final: Fit, best: Candidate | None,
         f"the loop in its final form {rival} fits better by ΔBIC {gain:.1f} and explains at "
         "least the noise variance more"]
     gear = tuple(rival if e == second else e for e in best.effects)
-    sigma, tau = round_noise(trial, [start, fit])
-    return trial, fit, replace(best, effects=gear, fit=fit, gate=gate(trial, start, fit, sigma,
-                                                                       tau),
-                               progressive=False, by_shape=False, undecided=())
+    added = gate(trial, start, fit, *round_noise(trial, [start, fit]))
+    return trial, fit, replace(best, effects=gear, fit=fit, gate=added, progressive=False,
+                               by_shape=False, undecided=())
 
 
 def dropped_after_refining(problem: Problem, final: Fit, best: Candidate | None, start: Fit
