@@ -187,6 +187,8 @@ def test_a_held_play_starts_where_the_last_handling_left_it():
     start = result.steps[0].params["start_position"]
     assert abs(start["value"]) < 1e-5 and start["unit"] == "rad"
     assert any("the record starts with the play at" in n for n in result.notes)
+    assert "T − s·T_h − T_c in place of T" in result.steps[0].form    # the form as fitted
+    assert "start position" in result.steps[0].form
     assert result.rmse_after == pytest.approx(sigma, rel=0.1)
 
 

@@ -189,6 +189,11 @@ def effect_form(problem: Problem, effect: str) -> str:
     if effect == "housing_compliance" and math.isfinite(problem.housing_opening):
         return (f"{fx.EFFECTS[effect].form}; a joint that opens: + c_o·sign(T)·max(|T| − T_o, 0),"
                 " c_o ≥ 0 (its compliance grows past T_o; VDI 2230 opening limit)")
+    if effect == "backlash" and (problem.play_hold or problem.play_bias):
+        return (f"{fx.EFFECTS[effect].form}; T − s·T_h − T_c in place of T (s = +1 loading, −1 "
+                "unloading: held by friction until the load passes T_h; crossed at T_c)"
+                + ("; before the load first passes ±T_h the play's own start position"
+                   if problem.play_start else ""))
     return _loop_form(problem) if effect == "hysteresis" else fx.EFFECTS[effect].form
 
 
