@@ -18,7 +18,8 @@ from .rig import RIG_EFFECTS, TORQUE_GAIN_KEY, TORQUE_OFFSET_KEY
 from .stribeck import hersey_params
 
 
-def _linear(fit: Fit, effect: str) -> dict[str, float]:
+def linear_of(fit: Fit, effect: str) -> dict[str, float]:
+    """The linear amplitudes of ``effect`` in ``fit``, by name."""
     return {name: float(v) for (e, name), v in zip(fit.labels, fit.beta) if e == effect}
 
 
@@ -26,7 +27,7 @@ def play_along_record(problem: Problem, fit: Fit, points: int = 201
                       ) -> tuple[float, float, float, float]:
     """(start, end, least, largest) of a play's lost motion [rad] along the record, from its
     Legendre terms or its step in ``fit`` (:func:`.refine.refine_play_drift`)."""
-    b = _linear(fit, "backlash")
+    b = linear_of(fit, "backlash")
     u = np.linspace(-1.0, 1.0, points)
     along = np.polynomial.legendre.legval(
         u, [b["lost_motion"]] + [b[k] for k in drift_labels(problem.play_drift)])
@@ -37,7 +38,7 @@ def play_along_record(problem: Problem, fit: Fit, points: int = 201
 
 def rig_params(problem: Problem, fit: Fit, effect: str) -> dict[str, dict]:
     """A measurement effect's parameters [unit of the data unless stated]."""
-    b = _linear(fit, effect)
+    b = linear_of(fit, effect)
     unit = problem.base.unit
     out = {k: {"value": v, "unit": p.unit if p.unit == "-" else unit}
            for k, v in b.items() for p in RIG_EFFECTS[effect].parameters if p.name == k}
@@ -211,7 +212,7 @@ def _loop_form(problem: Problem) -> str:
 
 def effect_params(problem: Problem, fit: Fit, effect: str) -> dict[str, dict]:
     """The gear effect's parameters with units (amplitudes, shapes and derived figures)."""
-    b = _linear(fit, effect)
+    b = linear_of(fit, effect)
     th = {p.name: fit.theta[key_of(effect, p.name)]
           for p in parameters_of(effect, problem.kind)}
     out: dict[str, tuple[float, str]] = {}

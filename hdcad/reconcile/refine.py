@@ -25,7 +25,7 @@ from .frames import refine_frames
 from .gates import EXPLAINED_MIN, beyond, bic_best, effective_n
 from .joint_fit import refine_spring
 from .loops import refine_creep, refine_hysteresis, refine_plays, refine_preisach
-from .params import play_along_record
+from .params import linear_of, play_along_record
 from .readings import free_scale
 from .rig import step_position
 from .springs import refine_opening
@@ -155,7 +155,7 @@ def refine_play(problem: Problem, fit: Fit) -> Fit:
         "in the new direction"), terms=1 + int(start))
     problem.play_start = bool(start and problem.play_hold)
     if problem.play_start:
-        b = {label[1]: v for label, v in zip(fit.labels, fit.beta) if label[0] == "backlash"}
+        b = linear_of(fit, "backlash")
         problem.notes.append(
             f"backlash: the record starts with the play at {b['start_position']:.3g} rad "
             f"(its lost motion {b['lost_motion']:.3g} rad), where the last handling left "

@@ -27,8 +27,8 @@ from dataclasses import replace
 from . import springs
 from .baseline import COMPLIANCE_SCALE_BOUNDS
 from .fitting import Fit, Problem, copy_problem, fit_model
-from .gates import (BIC_MIN, EXPLAINED_MIN, SECOND_TRY_EXPLAINED_MIN, Candidate, beyond, gate,
-                    round_noise)
+from .gates import (BIC_MIN, EXPLAINED_MIN, SECOND_TRY_EXPLAINED_MIN, Candidate, beyond,
+                    bic_gain, effective_n, gate, round_noise)
 from .readings import free_scale
 from .refine import fit_viscosity_law, refine_play, refine_play_drift
 from .te_forms import refine_te_order
@@ -149,15 +149,13 @@ def swapped_after_refining(problem: Problem, final: Fit, best: Candidate | None,
         fit = refine_play(trial, fit)
     if not beyond(trial, final, fit, explained_min=SECOND_TRY_EXPLAINED_MIN):
         return None
-    gain = gate(trial, final, fit, *round_noise(trial, [final, fit])).delta_bic
-    trial.notes = [n for n in trial.notes if not n.startswith(f"{second}:")] + [
+    gain = bic_gain(final, fit, effective_n(trial, fit.residual(trial)))  # as beyond's
+    trial.notes = [n for n in trial.notes if not n.startswith(f"{second}:")]
+    return _named_instead(
+        trial, best, start, fit, tuple(rival if e == second else e for e in best.effects),
         f"{rival} in place of {second}, named beside the loop during the selection: beside "
         f"the loop in its final form {rival} fits better by ΔBIC {gain:.1f} and explains at "
-        "least the noise variance more"]
-    gear = tuple(rival if e == second else e for e in best.effects)
-    added = gate(trial, start, fit, *round_noise(trial, [start, fit]))
-    return trial, fit, replace(best, effects=gear, fit=fit, gate=added, progressive=False,
-                               by_shape=False, undecided=())
+        "least the noise variance more", progressive=False, by_shape=False)
 
 
 def dropped_after_refining(problem: Problem, final: Fit, best: Candidate | None, start: Fit
@@ -179,10 +177,20 @@ def dropped_after_refining(problem: Problem, final: Fit, best: Candidate | None,
     loop = gate(trial, fit, final, *round_noise(trial, [fit, final]))
     if loop.passes(second=True):
         return None
-    trial.notes += [
+    return _named_instead(
+        trial, best, start, fit, ("backlash",),
         f"hysteresis, named beside the play during the selection, is not kept: beside the "
         f"play in its final form it adds ΔBIC {loop.delta_bic:.1f} and does not pass the "
-        "gates for a second"]
-    return trial, fit, replace(best, effects=("backlash",), fit=fit,
-                               gate=gate(trial, start, fit, *round_noise(trial, [start, fit])),
-                               undecided=(), series_slip=False)
+        "gates for a second", series_slip=False)
+
+
+def _named_instead(trial: Problem, best: Candidate, start: Fit, fit: Fit,
+                   effects: tuple[str, ...], note: str, **readings: bool
+                   ) -> tuple[Problem, Fit, Candidate]:
+    """(trial, fit, candidate) of the gear effects named in place of ``best``'s, with
+    ``note`` added and the candidate's gate over ``start`` (the model the gear effects were
+    added to); ``readings`` resets the candidate's reading flags that no longer hold."""
+    trial.notes.append(note)
+    added = gate(trial, start, fit, *round_noise(trial, [start, fit]))
+    return trial, fit, replace(best, effects=effects, fit=fit, gate=added, undecided=(),
+                               **readings)
