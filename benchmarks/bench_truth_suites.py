@@ -16,7 +16,10 @@ the category, columns: effects named) and the acceptance figures:
 - measurement effects named as such (rig findings) on separable decoys;
 - exact: the gear effects named are the hidden ones, no more and no fewer (clean, single,
   pair and separable-decoy cases): the figure that a method naming every effect at once
-  cannot win by naming more.
+  cannot win by naming more;
+- misses, by why (:func:`miss_kind`): given as a reading, left undecided between two, a
+  tie the data cannot break, a form the effect families lack, or a set that fits better
+  turned down by a rule.
 
 Run: python benchmarks/bench_truth_suites.py [--suite truths/truth_b.py ...] [--per-cell 4]
      [--seed 7] [--jobs 2] [--kind torsion] [--sindy]
@@ -66,9 +69,14 @@ def reconcile_case(case) -> dict:
 
     catalog = load_catalog()
     try:  # the model as the command line reads it
-        result = reconcile(case.kind, validate_data(case.kind, case.columns),
-                           resolve_gear(case.model, catalog)[0], catalog,
-                           load_inertia_kgm2=case.load_inertia_kgm2).as_dict()
+        found = reconcile(case.kind, validate_data(case.kind, case.columns),
+                          resolve_gear(case.model, catalog)[0], catalog,
+                          load_inertia_kgm2=case.load_inertia_kgm2)
+        result = found.as_dict()
+        # the gear round of the search: each set's ΔBIC over the model it was added to
+        result["gear_candidates"] = [(row["effect"].split("+"), row["delta_bic"])
+                                     for row in (found.candidates[-1] if found.candidates
+                                                 else [])]
     except Exception as exc:  # a refusal (e.g. wrong units) is a result, not a crash
         result = {"error": f"{type(exc).__name__}: {exc}", "missing_effects": [],
                   "rmse_before": np.nan, "rmse_after": np.nan}
@@ -111,6 +119,8 @@ def score(case, result) -> dict:
     if case.category == "decoy_separable" and case.measurement_effects:
         expected = {RIG_SYNONYMS.get(e, e) for e in case.measurement_effects}
         out["rig_right"] = expected <= set(rig)
+    if out.get("first_right") is False or out.get("wrong_second") or out.get("both") is False:
+        out["miss"] = miss_kind(out, result)
     if case.category == "decoy_equivalent":
         eq = set(case.equivalent_effects)
         out["both_readings"] = bool(eq & (set(named) | readings)) and (
@@ -121,6 +131,41 @@ def score(case, result) -> dict:
         out["ratio"] = after / case.noise_rms if case.noise_rms else np.nan
         out["shrink"] = 1 - after / before if before else np.nan
     return out
+
+
+def miss_kind(row: dict, result: dict) -> str:
+    """Why a single or a pair was missed, from the search's gear candidates (the loops in
+    their parametric forms, before the named model's final form):
+
+    - ``read``: a pair whose member not named is given as a reading of the one named, or a
+      single named with a second whose other reading is the single alone (a loop that
+      carries its own compliance, in place of a loop and a spring);
+    - ``undecided``: the member not named is one of two the report says fit about equally
+      beside the one named;
+    - ``tie``: the hidden set's ΔBIC within ``BIC_MIN`` of the named set's, the margin an
+      effect is named at: the data prefer neither;
+    - ``named fits``: the named set fits better by more: the hidden effect, in the forms the
+      search fits it in, leaves what the extra name takes (a form the families lack);
+    - ``hidden fits``: the hidden set fits better by more and a rule turned it down;
+    - ``?``: a set not in the candidate table (a rig effect named with it, or no table)."""
+    from hdcad.reconcile.gates import BIC_MIN
+
+    alone = {frozenset(r["alternative"]) for r in result.get("equivalent_readings", [])
+             if r.get("reading") == "loop_in_series"}
+    if row.get("both_or_read") or frozenset(row["hidden"]) in alone:
+        return "read"
+    rivals = {e for r in result.get("equivalent_readings", []) for e in r.get("undecided", [])}
+    if set(row["hidden"]) <= set(row["named"]) | rivals:
+        return "undecided"
+    table = {frozenset(effects): gain for effects, gain in result.get("gear_candidates", [])}
+    hidden, named = frozenset(row["hidden"]), frozenset(row["named"])
+    if hidden not in table or (named and named not in table):
+        return "?"
+    margin = table[hidden] - (table[named] if named else 0.0)
+    return "tie" if abs(margin) <= BIC_MIN else ("hidden fits" if margin > 0 else "named fits")
+
+
+MISS_KINDS = ("read", "undecided", "tie", "named fits", "hidden fits", "?")
 
 
 def _share(rows, key):
@@ -141,6 +186,10 @@ def summary(rows: list[dict], label: str) -> None:
           f"exact {fmt('exact')} | rig-named {fmt('rig_right')} | equiv-both {fmt('both_readings')} | "
           f"rmse≤1.2σ {ok_ratio:6.1%} (median {statistics.median(ratios) if ratios else np.nan:.2f}) | "
           f"shrink {statistics.median(shrinks) if shrinks else np.nan:6.1%}")
+    misses = [r["miss"] for r in rows if "miss" in r]
+    if misses:
+        print(f"{'':16s} misses {len(misses)}: " + ", ".join(
+            f"{k} {misses.count(k)}" for k in MISS_KINDS if k in misses))
 
 
 def confusion(rows: list[dict], kind: str) -> None:

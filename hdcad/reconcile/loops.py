@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import itertools
 import math
+from dataclasses import replace
 
 import numpy as np
 from scipy.optimize import least_squares
@@ -21,7 +22,7 @@ from scipy.optimize import least_squares
 from . import effects as fx
 from . import creep, plays
 from .bounded import solve
-from .fitting import POLISH_TOL, Fit, Problem, best_setting, finish
+from .fitting import POLISH_TOL, Fit, Problem, best_setting, copy_problem, finish
 from .model_columns import columns, nonlinear
 from .gates import (BIC_MIN, EXPLAINED_MIN, Candidate, beyond, bic_best, bic_choice,
                     effective_n, gate)
@@ -353,6 +354,25 @@ def series_plays(problem: Problem, start: Fit, pair: Fit, sigma: float, tau: flo
     problem.hysteresis_plays = problem.hysteresis_series = False
     problem.hysteresis_centred, problem.hysteresis_through_gear = named
     return None
+
+
+def without_spring_in_series(problem: Problem, fit: Fit) -> Fit | None:
+    """``fit`` (a loop named beside a housing spring, in its final form) without the spring,
+    its loop as friction elements in series with the gear (:mod:`.plays`), fitted on a copy
+    of ``problem``; None when the loop is not a friction loop beside a spring. The series
+    elements soften past their slip torques, so they carry a compliance of their own."""
+    if (problem.kind != "torsion" or problem.base.curve is None or problem.branches is None
+            or problem.hysteresis_series or problem.hysteresis_creep
+            or problem.hysteresis_duhem is not None
+            or not {"hysteresis", "housing_compliance"} <= set(fit.effects)):
+        return None
+    trial = replace(copy_problem(problem), hysteresis_preisach=None, hysteresis_plays=True,
+                    plays_load_share=0.0)
+    shapes = _shapes_beside_loop(problem, fit) - len(
+        fx.nonlinear_parameters("housing_compliance", problem.kind))
+    _set_plays_form(trial, "series")
+    effects = tuple(e for e in fit.effects if e != "housing_compliance")
+    return finish(trial, effects, fit.theta, shapes)
 
 
 def _density_residual(problem: Problem, fit: Fit, scale: np.ndarray):

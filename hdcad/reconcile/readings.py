@@ -140,6 +140,21 @@ def series_slip(tied: bool) -> list[dict]:
                      "housing's stiffness before stiffening it"}]
 
 
+def loop_in_series(added: dict[str, float] | None) -> list[dict]:
+    """The other reading of a housing spring named beside a loop when it adds too little
+    over the loop alone in series with the gear (``added``: its ΔBIC and explained noise
+    variances there): one loop that carries its own compliance."""
+    if added is None:
+        return []
+    return [{"alternative": ["hysteresis"], "reading": "loop_in_series",
+             "text": f"the loop alone, as friction elements in series with the gear that "
+                     f"soften past their slip torques, reads almost the same: the spring "
+                     f"adds ΔBIC {added['delta_bic']:.1f} and {added['explained']:.2f}× the "
+                     "noise variance over it, less than a second effect must; the spring may "
+                     "be the loop's own compliance (a slider that hardens, a joint in "
+                     "microslip): check the housing's stiffness before stiffening it"}]
+
+
 def progressive_spring(read: bool) -> list[dict]:
     """The other reading of a housing spring named for its stiffening: a backlash taken up
     slowly."""

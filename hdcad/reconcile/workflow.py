@@ -203,6 +203,7 @@ def reconcile(kind: str, data: dict, model: GearModel, catalog: Catalog,
     given = (readings.equivalent(problem, final, named, nuisances)
              + readings.undecided(named, rivals, beside, sigma, base.unit)
              + readings.series_slip(bool(best and best.series_slip))
+             + readings.loop_in_series(seconds.spring_beside_series_loop(problem, final))
              + readings.progressive_spring(bool(best and best.progressive)))
     return _result(problem, model, start, final, resid0, residual, sigma, tau, keep, steps,
                    candidates, rig_table, measurement, nuisances,
