@@ -137,9 +137,10 @@ def miss_kind(row: dict, result: dict) -> str:
     """Why a single or a pair was missed, from the search's gear candidates (the loops in
     their parametric forms, before the named model's final form):
 
-    - ``read``: a pair whose member not named is given as a reading of the one named, or a
-      single named with a second whose other reading is the single alone (a loop that
-      carries its own compliance, in place of a loop and a spring);
+    - ``read``: a pair whose member not named is given as a reading of the one named, or
+      the hidden set given whole as the other reading of the named one (a loop that
+      carries its own compliance, in place of a loop and a spring; a play held by friction
+      in place of a loop);
     - ``undecided``: the member not named is one of two the report says fit about equally
       beside the one named;
     - ``tie``: the hidden set's ΔBIC within ``BIC_MIN`` of the named set's, the margin an
@@ -151,11 +152,12 @@ def miss_kind(row: dict, result: dict) -> str:
     from hdcad.reconcile.gates import BIC_MIN
 
     alone = {frozenset(r["alternative"]) for r in result.get("equivalent_readings", [])
-             if r.get("reading") == "loop_in_series"}
+             if r.get("reading") in ("loop_in_series", "held_play")}
     if row.get("both_or_read") or frozenset(row["hidden"]) in alone:
         return "read"
     rivals = {e for r in result.get("equivalent_readings", []) for e in r.get("undecided", [])}
-    if set(row["hidden"]) <= set(row["named"]) | rivals:
+    unnamed = set(row["hidden"]) - set(row["named"])
+    if unnamed and unnamed <= rivals:
         return "undecided"
     table = {frozenset(effects): gain for effects, gain in result.get("gear_candidates", [])}
     hidden, named = frozenset(row["hidden"]), frozenset(row["named"])

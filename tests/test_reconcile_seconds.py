@@ -2,7 +2,10 @@
 undecided between two (:func:`hdcad.reconcile.seconds.decided_after_refining`), and one
 named that gives way to its rival (:func:`hdcad.reconcile.seconds.swapped_after_refining`),
 and a loop named beside a play that the play in its final form leaves nothing to
-(:func:`hdcad.reconcile.seconds.dropped_after_refining`).
+(:func:`hdcad.reconcile.seconds.dropped_after_refining`); a play added beside a loop named
+alone (:func:`hdcad.reconcile.seconds.added_after_refining`); and a play that friction
+holds, named as a loop, given as the loop's other reading
+(:func:`hdcad.reconcile.seconds.held_play_for_loop`).
 
 Beside a Bouc–Wen loop a play and a housing spring can fit about equally (pairs within 5 %
 in ΔBIC) when both patch what the loop's formula misses of the truth's loop; the second is
@@ -89,3 +92,44 @@ def test_a_loop_beside_a_held_play_is_dropped_once_the_play_has_its_final_form()
     assert any(note.startswith("hysteresis, named beside the play") for note in result["notes"])
     assert any("held by friction" in note for note in result["notes"])
     assert result["rmse_after"] <= 1.2 * case.noise_rms
+
+
+def _held_play_readings(result: dict) -> list[dict]:
+    return [r for r in result["equivalent_readings"] if r.get("reading") == "held_play"]
+
+
+def test_a_play_held_by_friction_named_as_a_loop_is_given_as_its_other_reading():
+    """Suite I's play that back-driving friction holds, alone (seed 13, 2 per cell): while
+    effects are named a play crosses at zero torque, so the held play's own loop (b wide,
+    2·T_h long) is named as hysteresis. The play in its final form (held, its start free)
+    in the loop's place reads as well (ΔBIC +3.7, a tie): the report gives it as the other
+    reading, with its lost motion and holding torque."""
+    case = named_case("i", "i-torsion-single-backlash-backdrive-held-play-000", 13)
+    result = bench.reconcile_case(case)
+    assert result["missing_effects"] == ["hysteresis"]
+    (other,) = _held_play_readings(result)
+    assert other["alternative"] == ["backlash"] and "ΔBIC +3.7" in other["text"]
+    assert result["rmse_after"] <= 1.2 * case.noise_rms
+
+
+def test_a_loop_that_narrows_to_its_turning_points_gets_no_held_play_reading():
+    """Suite I's Armstrong–Frederick loop (seed 13, 2 per cell): a play held by friction in
+    its place fits worse by ΔBIC 30.5, beyond the margin of 10: no such reading."""
+    case = named_case("i", "i-torsion-single-hysteresis-armstrong-frederick-001", 13)
+    result = bench.reconcile_case(case)
+    assert "hysteresis" in result["missing_effects"]
+    assert not _held_play_readings(result)
+
+
+def test_a_play_beside_a_loop_named_alone_is_added_once_the_loop_has_its_final_form():
+    """Suite M's Hilbert loop with a lost motion (seed 13, 2 per cell): while effects were
+    named, a spring beside the Bouc–Wen loop was read as the loop's own narrowing and the
+    loop was named alone, at 1.75σ. Beside the loop in its final form the play adds ΔBIC
+    470 and explains more than the noise variance, the spring nothing: the play is named
+    and the fit is at the noise. Suites B–N at seeds 7 and 11 (2 per cell) did not change."""
+    case = named_case("m", "m-torsion-pair-hysteresis+backlash-hilbert+lostmotion-001", 13)
+    result = bench.reconcile_case(case)
+    assert set(result["missing_effects"]) == {"hysteresis", "backlash"}
+    assert any(note.startswith("backlash named once the loop took its final form: beside it")
+               for note in result["notes"])
+    assert result["rmse_after"] <= 1.2 * case.noise_rms < 1.75 * case.noise_rms

@@ -155,6 +155,23 @@ def loop_in_series(added: dict[str, float] | None) -> list[dict]:
                      "microslip): check the housing's stiffness before stiffening it"}]
 
 
+def held_play(found: dict | None) -> list[dict]:
+    """The other reading of a named loop that a play held by friction reads about as well
+    as (``found``: the model's effects with the play in the loop's place, the play's ΔBIC
+    over the loop, its holding torque [N·m] and lost motion [rad])."""
+    if found is None:
+        return []
+    gear = [e for e in found["effects"] if e not in RIG_EFFECTS]
+    return [{"alternative": gear, "reading": "held_play",
+             "text": f"a play held by friction in place of the loop reads about the same "
+                     f"(ΔBIC {found['delta_bic']:+.1f}): lost motion "
+                     f"{found['lost_motion']:.3g} rad, held until the load passes "
+                     f"{found['hold']:.3g} N·m in the new direction, a loop as wide at every "
+                     "torque; a loop that narrows towards its turning points tells friction "
+                     "in the gear, one that keeps its width a play (the Oldham coupling's "
+                     "clearance, held by the back-driving friction)"}]
+
+
 def progressive_spring(read: bool) -> list[dict]:
     """The other reading of a housing spring named for its stiffening: a backlash taken up
     slowly."""
@@ -207,15 +224,35 @@ def rig_near(rows: list[dict], named: tuple[str, ...], alone: dict[str, float],
     for row in rows:
         if not row.get("near_gear") or row["effect"] in offered:
             continue
-        words = RIG_EFFECTS[row["effect"]].description  # its first clause
-        cuts = [i for i in (words.find(c) for c in (":", ";", ". ")) if i > 0]
-        words = words[:min(cuts)] if cuts else words
+        words = _first_clause(row["effect"])
         out.append({"effects": [first], "measurement": row["effect"],
-                    "text": f"{words[0].lower()}{words[1:]} explains nearly as much as "
+                    "text": f"{words} explains nearly as much as "
                             f"{first} (ΔBIC {row['delta_bic']:.1f} against "
                             f"{alone[first]:.1f}, closer than the naming margin "
                             f"{BIC_MIN:g}): check the rig before changing the model"})
     return out
+
+
+def twin_set_aside(set_aside: dict[str, float], named: tuple[str, ...]) -> list[dict]:
+    """The other reading of the gear effects named in place of a measurement effect that
+    they beat by less than ``BIC_MIN`` (``set_aside``: the effect and the ΔBIC the gear
+    effects won by): a torque channel's gain that reads nearly as a series spring."""
+    if not named:
+        return []
+    return [{"effects": list(named), "measurement": effect,
+             "text": f"the rig's {effect} ({_first_clause(effect)}) was set aside for "
+                     f"{' + '.join(named)}, which fit better by ΔBIC {gain:.1f} only, closer "
+                     f"than the naming margin {BIC_MIN:g}: the rig's reading stays open; "
+                     "check its calibration before changing the model"}
+            for effect, gain in set_aside.items()]
+
+
+def _first_clause(effect: str) -> str:
+    """The first clause of a measurement effect's description, lower-cased."""
+    words = RIG_EFFECTS[effect].description
+    cuts = [i for i in (words.find(c) for c in (":", ";", ". ")) if i > 0]
+    words = words[:min(cuts)] if cuts else words
+    return f"{words[0].lower()}{words[1:]}"
 
 
 def _spring_reading(problem: Problem, stiffness: float, within: bool, named: bool) -> dict:

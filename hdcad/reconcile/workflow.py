@@ -161,7 +161,7 @@ def reconcile(kind: str, data: dict, model: GearModel, catalog: Catalog,
                                 _held_for_twin(kind, rig_table))
     # the rig search's last round was over the gear search's start unless a twin changed it
     near = rig_table[-1] if rig_table and chosen[0] is problem else []
-    problem, with_rig, best, candidates = chosen
+    problem, with_rig, best, candidates, set_aside = chosen
     final = search.recheck_rig(problem, best.fit if best else with_rig)
     final = refine.refine(problem, _without_outliers(problem, final))
     keep = np.ones(len(base.y), bool)
@@ -176,10 +176,12 @@ def reconcile(kind: str, data: dict, model: GearModel, catalog: Catalog,
     rivals = best.undecided if best else ()
     beside_fits = {r: fit_model(problem, final.effects + (r,), final.theta) for r in rivals}
     decided = seconds.decided_after_refining(problem, final, beside_fits)
-    if decided:
-        final, beside_fits = decided[1], {}
-        best = replace(best, effects=best.effects + (decided[0],), undecided=())
-        problem.notes.append(_decided_note(decided))
+    added = None if decided else seconds.added_after_refining(problem, final, best)
+    if decided or added:
+        second, final, _ = decided or added
+        beside_fits = {}
+        best = replace(best, effects=best.effects + (second,), undecided=())
+        problem.notes.append(_second_note(decided or added, undecided=bool(decided)))
     changed = (seconds.swapped_after_refining(problem, final, best, with_rig)
                or seconds.dropped_after_refining(problem, final, best, with_rig))
     if changed:  # the second weighed again beside the named model's final form
@@ -204,20 +206,27 @@ def reconcile(kind: str, data: dict, model: GearModel, catalog: Catalog,
              + readings.undecided(named, rivals, beside, sigma, base.unit)
              + readings.series_slip(bool(best and best.series_slip))
              + readings.loop_in_series(seconds.spring_beside_series_loop(problem, final))
+             + readings.held_play(seconds.held_play_for_loop(problem, final))
+             + readings.twin_set_aside(set_aside, named)
              + readings.progressive_spring(bool(best and best.progressive)))
     return _result(problem, model, start, final, resid0, residual, sigma, tau, keep, steps,
                    candidates, rig_table, measurement, nuisances,
                    given + readings.rig_near(near, named, alone, given))
 
 
-def _decided_note(decided: tuple[str, Fit, dict[str, float]]) -> str:
-    second, _, gains = decided
+def _second_note(found: tuple[str, Fit, dict[str, float]], undecided: bool) -> str:
+    """The note of a second named once the loop took its final form: one left undecided
+    between two beside the parametric loop, or one added to a loop named alone."""
+    second, _, gains = found
     other = next(r for r in gains if r != second)
-    return (f"{second} named once the loop took its final form: beside the parametric loop "
-            f"it and {other} fitted about equally (ΔBIC within {search.SECOND_AMBIGUITY:.0%}); "
-            f"beside the final loop {second} adds ΔBIC {gains[second]:.1f}, passes the gates "
-            f"for a second and explains at least the noise variance; {other} adds "
-            f"{gains[other]:.1f} and does not")
+    how = (f"beside the parametric loop it and {other} fitted about equally (ΔBIC within "
+           f"{search.SECOND_AMBIGUITY:.0%}); beside the final loop {second}" if undecided
+           else f"beside it {second}")
+    why = "" if undecided else (" (while effects were named, the loop's parametric form "
+                                "took what it leaves)")
+    return (f"{second} named once the loop took its final form: {how} adds ΔBIC "
+            f"{gains[second]:.1f}, passes the gates for a second and explains at least the "
+            f"noise variance; {other} adds {gains[other]:.1f} and does not{why}")
 
 
 def _gear_twin_instead(problem: Problem, unselected: Problem, with_rig: Fit, best,
@@ -230,29 +239,31 @@ def _gear_twin_instead(problem: Problem, unselected: Problem, with_rig: Fit, bes
     its gear twin alone read about the same (a warm-up's drift with time and the
     efficiency's temperature dependence): selected again with it, kept when that fits
     better by ``BIC_MIN`` (the twin may leave a part of the change the drift takes up).
-    Returns (problem, rig fit, best, candidates) of the reading kept."""
+    Returns (problem, rig fit, best, candidates) of the reading kept and the measurement
+    effects set aside by less than ``BIC_MIN``, each with the ΔBIC the gear effects won by."""
     twins = [e for e in with_rig.effects if (problem.kind, e) in search.GEAR_TWIN]
     if twins:
         other = tuple(e for e in with_rig.effects if e not in twins)
     elif held:
         other = with_rig.effects + held
     else:
-        return problem, with_rig, best, candidates
+        return problem, with_rig, best, candidates, {}
     start = fit_model(unselected, other, with_rig.theta)
     alt_best, alt_candidates = search.select_gear(unselected, start)
     if alt_best is None and twins:
-        return problem, with_rig, best, candidates
+        return problem, with_rig, best, candidates, {}
     kept = best.fit if best else with_rig
     gain = bic_gain(kept, alt_best.fit if alt_best else start,
                     effective_n(problem, kept.residual(problem)))
     if gain <= (0.0 if twins else BIC_MIN):
-        return problem, with_rig, best, candidates
+        return problem, with_rig, best, candidates, {}
     unselected.notes.append(
         f"{' and '.join(twins)} set aside: without it, {' + '.join(alt_best.effects)} fit "
         f"better (ΔBIC {gain:.1f})" if twins else
         f"{' and '.join(held)} added after all: with it, the model fits better (ΔBIC "
         f"{gain:.1f}) than with the gear effects alone")
-    return unselected, start, alt_best, alt_candidates
+    return unselected, start, alt_best, alt_candidates, {
+        t: gain for t in twins if gain <= BIC_MIN}
 
 
 def _held_for_twin(kind: str, table: list[list[dict]]) -> tuple[str, ...]:
