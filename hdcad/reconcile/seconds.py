@@ -148,6 +148,8 @@ def added_after_refining(problem: Problem, final: Fit, best: Candidate | None
         return None
     fits = {r: fit_model(problem, final.effects + (r,), final.theta) for r in RIVAL_SECONDS}
     return decided_after_refining(problem, final, fits)
+
+
 # the second beside a loop and the one it may give way to: a play and a series spring
 RIVAL_SECONDS = {"backlash": "housing_compliance", "housing_compliance": "backlash"}
 
@@ -194,12 +196,9 @@ def dropped_after_refining(problem: Problem, final: Fit, best: Candidate | None,
     loop of its own (area b·2T_h), which a loop named beside it takes."""
     if best is None or best.effects != ("backlash", "hysteresis"):
         return None
-    # the play's final form found again without the loop
-    trial = replace(copy_problem(problem), play_hold=0.0, play_start=False, play_bias=0.0,
-                    play_drift=0, play_step=None)
-    trial.notes = [n for n in trial.notes if not n.startswith(("hysteresis", "backlash:"))]
-    effects = tuple(e for e in final.effects if e != "hysteresis")
-    fit = refine_play_drift(trial, refine_play(trial, fit_model(trial, effects, final.theta)))
+    trial, fit = _play_found_again(problem, final,
+                                   tuple(e for e in final.effects if e != "hysteresis"),
+                                   drop_notes=("hysteresis", "backlash:"))
     loop = gate(trial, fit, final, *round_noise(trial, [fit, final]))
     if loop.passes(second=True):
         return None
@@ -247,15 +246,27 @@ def held_play_for_loop(problem: Problem, final: Fit) -> dict | None:
     if problem.kind != "torsion" or "hysteresis" not in final.effects or (
             "backlash" in final.effects):
         return None
-    trial = replace(copy_problem(problem), play_hold=0.0, play_start=False, play_bias=0.0,
-                    play_drift=0, play_step=None)
     effects = tuple("backlash" if e == "hysteresis" else e for e in final.effects)
-    fit = refine_play_drift(trial, refine_play(trial, fit_model(trial, effects, final.theta)))
+    trial, fit = _play_found_again(problem, final, effects)
     gain = bic_gain(final, fit, effective_n(trial, fit.residual(trial)))
     if trial.play_hold <= 0.0 or gain < -BIC_MIN:
         return None  # a play that crosses at zero torque makes no loop
     return {"effects": effects, "delta_bic": gain, "hold": trial.play_hold,
             "lost_motion": linear_of(fit, "backlash")["lost_motion"]}
+
+
+def _play_found_again(problem: Problem, final: Fit, effects: tuple[str, ...],
+                      drop_notes: tuple[str, ...] = ()) -> tuple[Problem, Fit]:
+    """(trial, fit) of ``effects`` (a play among them) on a copy of ``problem`` whose play
+    has its final form found again from the default one (held by friction, its start free,
+    its lost motion along the record: :func:`.refine.refine_play`,
+    :func:`.refine.refine_play_drift`), starting from ``final``'s shapes; the copy's notes
+    that start with ``drop_notes`` are left out first."""
+    trial = replace(copy_problem(problem), play_hold=0.0, play_start=False, play_bias=0.0,
+                    play_drift=0, play_step=None)
+    trial.notes = [n for n in trial.notes if not n.startswith(drop_notes)]
+    fit = refine_play_drift(trial, refine_play(trial, fit_model(trial, effects, final.theta)))
+    return trial, fit
 
 
 def _named_instead(trial: Problem, best: Candidate, start: Fit, fit: Fit,
