@@ -42,15 +42,16 @@ def te_order_of(name: str) -> int:
 
 
 def harmonic(problem: Problem, order: int, theta: dict, full: bool,
-             fixed_frame: bool = False) -> np.ndarray:
+             frames: tuple[float, float | None] | None = None) -> np.ndarray:
     """The error's columns at ``order`` on the fitted rows or every row (``full``):
     :func:`te_basis`, or the linear joint's response to them (vibration, when ``theta``
-    holds the damping); ``fixed_frame``: at k·φ whatever the error's frame."""
+    holds the damping); in ``frames`` (frame, second frame or None) if given, else in the
+    error's own (``(0.0, None)``: at k·φ whatever the error's frame)."""
     zeta = theta.get("damping_ratio")
     scale = theta.get("stiffness_scale", 1.0)
-    frames = (0.0, None) if fixed_frame else frames_of(problem, order)
+    frames = frames_of(problem, order) if frames is None else frames
     key = (order, frames, zeta, scale, full, problem.steady_state)
-    width = te_width(problem, order) if not fixed_frame else 2 * (problem.te_order + 1)
+    width = 2 * (problem.te_order + 1) + 2 * (frames[1] is not None)
     # a lower Legendre order's columns are the first of a higher one's: kept once, sliced
     if key not in problem.cache or problem.cache[key].shape[1] < width:
         inp = problem.base.inputs
@@ -67,6 +68,21 @@ def harmonic(problem: Problem, order: int, theta: dict, full: bool,
             problem.cache.clear()
         problem.cache[key] = cols
     return problem.cache[key][:, :width]
+
+
+def locked_overtone(problem: Problem, theta: dict, full: bool) -> np.ndarray:
+    """The 1× error's 2× overtone locked to it, sin(2·(1 + δ)·φ + q) with δ the 1× error's
+    frame and q ``Problem.te_locked_2x``, times P0 … P_te_order of the record position as
+    the error's own amplitude (through the joint, as :func:`harmonic`), on the fitted rows
+    or every row (n × (te_order + 1); labelled by :func:`locked_labels`)."""
+    cols = harmonic(problem, 2, theta, full, (frames_of(problem, 1)[0], None))
+    q = problem.te_locked_2x
+    return cols[:, 0::2] * np.cos(q) + cols[:, 1::2] * np.sin(q)
+
+
+def locked_labels(order: int) -> list[str]:
+    """Names of :func:`locked_overtone`'s columns: locked_2x, then locked_2x_uk."""
+    return ["locked_2x"] + [f"locked_2x_u{k}" for k in range(1, order + 1)]
 
 
 def overtones_of(problem: Problem, effects: tuple[str, ...], name: str) -> list[int]:

@@ -20,8 +20,8 @@ from . import efficiency_laws as laws
 from . import effects as fx
 from . import creep, duhem, plays, rig, spring_forms
 from .effects import key_of
-from .harmonics import (harmonic, legendre, overtones_of, sideband_labels, sidebands,
-                        te_column_labels, te_order_of)
+from .harmonics import (harmonic, legendre, locked_labels, locked_overtone, overtones_of,
+                        sideband_labels, sidebands, te_column_labels, te_order_of)
 
 if TYPE_CHECKING:
     from .fitting import Problem
@@ -117,6 +117,8 @@ def columns(problem: Problem, effects: tuple[str, ...], theta: dict[str, float],
             add(name, te_column_labels(problem, order), harmonic(problem, order, theta, full))
             for k in overtones_of(problem, effects, name):
                 add(name, [f"sin_{k}x", f"cos_{k}x"], harmonic(problem, k, theta, full)[:, :2])
+            if order == 1 and problem.te_locked_2x is not None:
+                add(name, locked_labels(problem.te_order), locked_overtone(problem, theta, full))
             if order in problem.te_sidebands:
                 add(name, sideband_labels(problem.te_sidebands[order][1]),
                     sidebands(problem, order, full))

@@ -93,6 +93,8 @@ def _te(b: dict[str, float], th: dict[str, float]) -> dict[str, tuple[float, str
         if key.startswith("sin_") and key.endswith("x"):
             k = key[4:-1]
             out[f"amplitude_{k}x"] = (math.hypot(b[key], b[f"cos_{k}x"]), "rad")
+    if "locked_2x" in b:  # the 2× overtone locked to the 1× error's phase
+        out["amplitude_2x"] = (abs(b["locked_2x"]), "rad")
     for shared in ("damping_ratio", "stiffness_scale"):
         if shared in th:
             out[shared] = (th[shared], "-")

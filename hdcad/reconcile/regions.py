@@ -111,7 +111,7 @@ def harmonics(problem, residual, sigma, tau, theta=None):
     n_eff = max(len(rows) / tau, 3.0)
     for k in HARMONIC_ORDERS:
         X = np.column_stack([np.ones(len(rows)), harmonic(problem, k, theta or {}, full=False,
-                                                           fixed_frame=True)[:, :2]])
+                                                           frames=(0.0, None))[:, :2]])
         beta = np.linalg.lstsq(X, residual[rows], rcond=None)[0]
         part = X[:, 1:] @ beta[1:]
         rms = float(np.sqrt(np.mean(part ** 2)))

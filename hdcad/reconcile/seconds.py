@@ -27,6 +27,7 @@ Schwarz, G. (1978) "Estimating the dimension of a model", Ann. Stat. 6: BIC.
 
 from __future__ import annotations
 
+import math
 from dataclasses import replace
 
 from . import effects as fx
@@ -34,6 +35,8 @@ from . import springs
 from .baseline import COMPLIANCE_SCALE_BOUNDS
 from .fitting import Fit, Problem, copy_problem, fit_model
 from .loops import without_spring_in_series
+from .harmonics import frames_of
+from .joint_fit import CurveFit
 from .gates import (BIC_MIN, EXPLAINED_MIN, SECOND_TRY_EXPLAINED_MIN, Candidate, beyond,
                     bic_gain, effective_n, gate, round_noise)
 from .params import linear_of
@@ -207,6 +210,54 @@ def dropped_after_refining(problem: Problem, final: Fit, best: Candidate | None,
         f"hysteresis, named beside the play during the selection, is not kept: beside the "
         f"play in its final form it adds ΔBIC {loop.delta_bic:.1f} and does not pass the "
         "gates for a second", series_slip=False)
+
+
+# the most of the 1× error's amplitude its 2× overtone may carry: a 1× modulation of depth ε
+# (a stiffness or a load that varies once per revolution) puts ε/2 of the 1× into 2×, and
+# the eccentric member's angle law atan(ε·sin φ/(1 + ε·cos φ)) as much; depths to 50 %
+OVERTONE_SHARE_MAX = 0.25
+
+# phase of the 2× overtone of a 1× error a·sin(x + p), less 2p, by the law that makes it: a
+# function of the error's value (sin² = (1 − cos 2x)/2) or of the member's angle (the
+# eccentric member's series −ε²/2·sin 2x), each up to the sign
+OVERTONE_LAWS = {"value": math.pi / 2, "angle": 0.0}
+
+
+def te_2x_as_overtone(problem: Problem, final: Fit, best: Candidate | None, start: Fit
+                      ) -> tuple[Problem, Fit, Candidate] | None:
+    """(problem, fit, candidate) of the 1× error alone, carrying a 2× overtone locked to its
+    phase by one of :data:`OVERTONE_LAWS` (one amplitude, ``Problem.te_locked_2x``), when the
+    2× error named beside it is under ``OVERTONE_SHARE_MAX`` of the 1× and, free, fits
+    better than the locked overtone by no more than ``BIC_MIN``; else None. ``start`` is
+    the model the gear effects were added to.
+
+    A 1× error that is not a pure sinusoid (a mesh stiffness or a drag that varies once per
+    output revolution, an eccentric member) has a harmonic series of its own, whose 2× has
+    a phase fixed by the 1×'s; the wave generator's 2× error has a phase of its own."""
+    if (best is None or not {"te_1x", "te_2x"} <= set(final.effects)
+            or isinstance(final, CurveFit) or frames_of(problem, 1)[1] is not None):
+        return None
+    one, two = linear_of(final, "te_1x"), linear_of(final, "te_2x")
+    a1 = math.hypot(one["sin"], one["cos"])
+    if not math.hypot(two["sin"], two["cos"]) <= OVERTONE_SHARE_MAX * a1:
+        return None
+    p1 = math.atan2(one["cos"], one["sin"])
+    effects = tuple(e for e in final.effects if e != "te_2x")
+    trials = {law: replace(copy_problem(problem), te_locked_2x=2 * p1 + shift)
+              for law, shift in OVERTONE_LAWS.items()}
+    fits = {law: fit_model(trial, effects, final.theta) for law, trial in trials.items()}
+    law = min(fits, key=lambda k: fits[k].rss)
+    trial, fit = trials[law], fits[law]
+    gain = bic_gain(fit, final, effective_n(trial, final.residual(trial)))
+    if gain > BIC_MIN:
+        return None
+    share = abs(linear_of(fit, "te_1x")["locked_2x"]) / a1
+    return _named_instead(
+        trial, best, start, fit, tuple(e for e in best.effects if e != "te_2x"),
+        f"te_2x, named beside te_1x during the selection, is the 1× error's own 2× overtone: "
+        f"{share:.1%} of the 1× at the phase the {law} law locks to it (ΔBIC of a free 2× "
+        f"error over it {gain:+.1f}); a 1× stiffness or drag that varies once per "
+        "revolution, or an eccentric member, makes it")
 
 
 def spring_beside_series_loop(problem: Problem, final: Fit) -> dict[str, float] | None:

@@ -183,7 +183,8 @@ def reconcile(kind: str, data: dict, model: GearModel, catalog: Catalog,
         best = replace(best, effects=best.effects + (second,), undecided=())
         problem.notes.append(_second_note(decided or added, undecided=bool(decided)))
     changed = (seconds.swapped_after_refining(problem, final, best, with_rig)
-               or seconds.dropped_after_refining(problem, final, best, with_rig))
+               or seconds.dropped_after_refining(problem, final, best, with_rig)
+               or seconds.te_2x_as_overtone(problem, final, best, with_rig))
     if changed:  # the second weighed again beside the named model's final form
         problem, final, best = changed
         candidates = candidates + [best] * (best.effects not in {c.effects for c in candidates})
