@@ -342,6 +342,33 @@ def test_no_output_gain_on_clean_transmission_data():
             if any(m["effect"] == "sensor_gain" for m in r["measurement_effects"])] == []
 
 
+CONSTANT_OFFSETS = ("constant", "const-", "preloadoffset", "autocollimator-zero")
+
+
+def test_a_twist_zeroed_off_zero_torque_is_reported_and_nothing_else_is():
+    """Every suite's torsion cases in the shared sample (seed 11, 1 per cell): the decoys
+    whose twist carries a constant offset (B, D, F, G: the twist zero; L: a tare under a
+    dead-weight preload; N: an autocollimator's zero) report it as the rig's angle_offset,
+    at L's and N's drawn offsets within 5 % (the offset is the baseline's, fitted with the
+    stiffness scale over 5–10 noise RMS of it); no clean case, and no case that names an
+    effect, reports a constant twist offset."""
+    from truth_runs import SUITES, suite_runs
+    torsion = [(c, r) for path in SUITES for c, r in zip(*suite_runs(path))
+               if c.kind == "torsion"]
+    offsets = {c.name: next((m for m in r["measurement_effects"]
+                             if m["effect"] == "angle_offset" and "offset" in m["params"]), None)
+               for c, r in torsion}
+    decoys = [c for c, _ in torsion if c.measurement_effects == ("angle_offset",)
+              and any(k in c.name for k in CONSTANT_OFFSETS)]
+    assert len(decoys) == 6 and all(offsets[c.name] for c in decoys)
+    for c in decoys:
+        drawn = c.nuisance.get("twist_offset_rad", c.nuisance.get("angle_offset_rad"))
+        if drawn is not None:
+            assert offsets[c.name]["params"]["offset"]["value"] == pytest.approx(drawn, rel=0.05)
+    others = [c.name for c, r in torsion if offsets[c.name] and c not in decoys]
+    assert others == []
+
+
 def test_a_measurement_effect_close_behind_the_gear_effect_is_given_beside_it():
     """A measurement effect that passes the gates with its own signature but comes within
     the naming margin below the best gear effect alone is not named, and is given beside the
@@ -353,11 +380,28 @@ def test_a_measurement_effect_close_behind_the_gear_effect_is_given_beside_it():
             {"effect": "sensor_gain", "delta_bic": 40.0, "near_gear": False}]
     (reading,) = rig_near(rows, ("hysteresis",), {"hysteresis": 100.0, "backlash": 3.0}, [])
     assert reading["effects"] == ["hysteresis"] and reading["measurement"] == "thermal_drift"
-    assert reading["text"].startswith("a slow drift of the measured angle with test time")
+    assert reading["text"].startswith(
+        "the rig's thermal_drift (a slow drift of the measured angle with test time")
     assert "ΔBIC 95.0 against 100.0" in reading["text"]
     assert rig_near(rows, (), {"hysteresis": 100.0}, []) == []
     offered = [{"effects": ["hysteresis"], "measurement": "thermal_drift", "text": "…"}]
     assert rig_near(rows, ("hysteresis",), {"hysteresis": 100.0}, offered) == []
+
+
+def test_a_torque_gain_without_its_signature_is_given_beside_the_spring():
+    """Suite K's wrong shunt-calibration resistor (seed 13, 2 per cell): the torque channel
+    reads 12 % high, and its gain beats the spring alone in the rig search (ΔBIC 117.9
+    against 114.6) but does not move the catalog curve's corners beyond the spread, so the
+    data cannot tell it from a softer gear or a series spring. The spring is named (by
+    ΔBIC 1.0 over the gain) and the gain is given beside it, with the softer gear."""
+    case = named_case("k", "k-torsion-decoy_separable-none-shunt-cal-gain-000", 13)
+    result = bench.reconcile_case(case)
+    assert result["missing_effects"] == ["housing_compliance"]
+    readings = result["equivalent_readings"]
+    (gain,) = [r for r in readings if r.get("measurement") == "sensor_gain"]
+    assert gain["effects"] == ["housing_compliance"]
+    assert "ΔBIC 117.9 against 118.9" in gain["text"]
+    assert any(r.get("nuisance") == "stiffness_scale" for r in readings)
 
 
 def test_a_drift_built_up_by_the_test_s_own_work_reads_nearly_as_a_loop():

@@ -331,6 +331,30 @@ def output_gain_entry(problem: Problem, fit: Fit, sigma: float, tau: float) -> l
              "reading": text}]
 
 
+def twist_zero_entry(problem: Problem, fit: Fit, sigma: float, tau: float) -> list[dict]:
+    """Torsion: the twist's zero off as a measurement effect (``angle_offset``, constant),
+    where it is significant (as :func:`output_gain_entry`'s gain: leaving the baseline's
+    offset out raises the BIC by more than ``BIC_MIN`` and the residual by
+    ``EXPLAINED_MIN`` noise variances). The catalog curve passes through zero twist at zero
+    torque, so a twist that reads otherwise there was zeroed under load or not zeroed. Only
+    where no other effect is named: beside a gear effect the offset is as much the effect's
+    (a play not centred, a loop that starts on one branch), beside a drift or a step of the
+    angle the zero moves and the offset is its mean, beside a torque zero offset the twist
+    follows the torque's. Empty otherwise."""
+    label = ("baseline", "offset")
+    if (problem.kind != "torsion" or label not in fit.labels or fit.columns is None
+            or fit.effects):
+        return []
+    i = fit.labels.index(label)
+    if not _significant(problem, fit.columns, i, sigma, tau):
+        return []
+    offset = float(fit.beta[i])
+    return [{"effect": "angle_offset", "params": {"offset": {"value": offset, "unit": "rad"}},
+             "reading": f"the twist reads {offset:.3g} rad at zero torque, where the catalog "
+                        "curve passes through zero: the twist was zeroed under load or not "
+                        "at all (a tare taken under a preload, an encoder not homed)"}]
+
+
 def _significant(problem: Problem, columns: np.ndarray, i: int, sigma: float, tau: float
                  ) -> bool:
     """Whether column ``i`` of the design ``columns`` earns its place: leaving it out raises
@@ -349,4 +373,4 @@ def _significant(problem: Problem, columns: np.ndarray, i: int, sigma: float, ta
 
 
 __all__ = ["effect_form", "effect_params", "output_gain_entry", "rig_entry", "rig_params",
-           "TE_LABELS"]
+           "twist_zero_entry", "TE_LABELS"]

@@ -211,7 +211,8 @@ def undecided(named: tuple[str, ...], rivals: tuple[str, ...], rmse: dict[str, f
 def rig_near(rows: list[dict], named: tuple[str, ...], alone: dict[str, float],
              given: list[dict]) -> list[dict]:
     """A measurement effect of the rig search's last round (``rows``) that passed the gates
-    with its own signature but came within ``BIC_MIN`` below the best gear effect alone,
+    and came within ``BIC_MIN`` below the best gear effect alone, or above it without its
+    own signature (a torque channel's gain whose corners do not move beyond the spread),
     given beside the first gear effect named (ΔBIC alone over the same model, ``alone``)
     unless a reading ``given`` already offers it: the gear's reading is kept by less than
     the naming margin, so the reviewer checks the rig before changing the model (a drift
@@ -226,10 +227,11 @@ def rig_near(rows: list[dict], named: tuple[str, ...], alone: dict[str, float],
             continue
         words = _first_clause(row["effect"])
         out.append({"effects": [first], "measurement": row["effect"],
-                    "text": f"{words} explains nearly as much as "
+                    "text": f"the rig's {row['effect']} ({words}) explains about as much as "
                             f"{first} (ΔBIC {row['delta_bic']:.1f} against "
                             f"{alone[first]:.1f}, closer than the naming margin "
-                            f"{BIC_MIN:g}): check the rig before changing the model"})
+                            f"{BIC_MIN:g}, or more without the rig effect's own signature): "
+                            "check the rig before changing the model"})
     return out
 
 

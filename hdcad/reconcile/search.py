@@ -91,8 +91,8 @@ def select_rig(problem: Problem, start: Fit, known: dict[str, Fit] | None = None
         rival = max(alone.values(), default=-math.inf)
         # with its own signature, and beating every gear effect alone or coming within
         # BIC_MIN of the best (then reported beside it as a reading the data barely refuse)
-        signed = {n: g.passes() and g.delta_bic > rival - BIC_MIN
-                  and _rig_signature(problem, n, current, fits[n]) for n, g in gates.items()}
+        near = {n: g.passes() and g.delta_bic > rival - BIC_MIN for n, g in gates.items()}
+        signed = {n: near[n] and _rig_signature(problem, n, current, fits[n]) for n in gates}
         ok = {n: signed[n] and gates[n].delta_bic > rival for n in gates}
         twin = {n: alone.get(GEAR_TWIN.get((problem.kind, n)), -math.inf) for n in gates}
         held = {n: ok[n] and g.delta_bic <= twin[n] + BIC_MIN for n, g in gates.items()}
@@ -100,7 +100,9 @@ def select_rig(problem: Problem, start: Fit, known: dict[str, Fit] | None = None
         table.append([{"effect": n, "delta_bic": g.delta_bic, "cv_gain": g.cv_gain,
                        "explained_var_over_noise": g.explained, "passes": ok[n],
                        "held_for_twin": held[n],
-                       "near_gear": signed[n] and g.delta_bic <= rival}
+                       # a reading the data barely refuse: within BIC_MIN below the best
+                       # gear effect, or above it without its own signature
+                       "near_gear": near[n] and not (signed[n] and g.delta_bic > rival)}
                       for n, g in gates.items()])
         passing = [n for n in ok if ok[n]]
         if not passing:

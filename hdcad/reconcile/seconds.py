@@ -3,7 +3,8 @@ and the readings under which a second that explains little of the first's residu
 still its own effect.
 
 - a transmission error beside another once that one follows its own slow modulation
-  (:func:`beyond_modulation`);
+  (:func:`beyond_modulation`), and a 2× error named beside a 1× error that is the 1×'s own
+  overtone, its phase locked to the 1×'s (:func:`te_2x_as_overtone`);
 - a housing spring that the other effect alone leaves to a gear softer than the catalog's
   spread (:func:`beyond_spread`), or one told from the stiffness scale by its shape
   (:func:`.springs.by_its_shape`);

@@ -34,7 +34,8 @@ from .data import check_revolutions, validate_data
 from .fitting import Fit, Problem, copy_problem, fit_model, make_problem, set_rows
 from .gates import BIC_MIN, bic_gain, effective_n
 from .noise import correlation_time, noise_rms
-from .params import effect_form, effect_params, output_gain_entry, rig_entry
+from .params import (effect_form, effect_params, output_gain_entry, rig_entry,
+                     twist_zero_entry)
 
 GATE_NOTE = search.GATE_NOTE
 # A sample further than this many noise RMS from the median of its neighbours is a gross
@@ -202,6 +203,7 @@ def reconcile(kind: str, data: dict, model: GearModel, catalog: Catalog,
         for e in final.effects if e in search.rig.RIG_EFFECTS]
     if "sensor_gain" not in final.effects:
         measurement += output_gain_entry(problem, final, sigma, tau)
+    measurement += twist_zero_entry(problem, final, sigma, tau)
     nuisances = readings.nuisances(problem, final)
     given = (readings.equivalent(problem, final, named, nuisances)
              + readings.undecided(named, rivals, beside, sigma, base.unit)
