@@ -76,6 +76,23 @@ def test_a_2x_locked_to_the_1x_is_its_overtone_not_a_second_error(suite, seed, n
     assert result["rmse_after"] <= 1.2 * case.noise_rms
 
 
+@pytest.mark.parametrize("seed, name", [
+    (13, "i-vibration-single-te-1x-parametric-drag-1x-000"),
+    (11, "i-vibration-single-te-1x-parametric-drag-1x-001"),
+])
+def test_a_stiffness_varying_once_per_revolution_in_a_run_up_makes_its_own_2x(seed, name):
+    """Suite I's parametric (Hill) excitation in a run-up: a mesh stiffness varying once
+    per revolution acts on the twist it causes, so the 2× is the 1×'s excitation times the
+    1×'s response through the joint, whose phase lag changes along the run-up; locked at
+    the excitation the 2× missed by 0.2–0.4 rad and a free te_2x was named beside te_1x.
+    Only te_1x is named, by the value law, within 1.2σ of the true noise."""
+    case = named_case("i", name, seed)
+    result = bench.reconcile_case(case)
+    assert result["missing_effects"] == ["te_1x"]
+    assert any(OVERTONE in n and "the value law" in n for n in result["notes"])
+    assert result["rmse_after"] <= 1.2 * case.noise_rms
+
+
 def test_a_true_2x_error_a_sixth_of_the_1x_keeps_its_name():
     """Suite C's phase-modulated pair (seed 7, 2 per cell): the 2× error is 0.17 of the
     1×, under the share an overtone may carry, but at a phase of its own (1.08 rad from the

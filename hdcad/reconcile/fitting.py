@@ -66,9 +66,9 @@ class Problem:
     # transmission: a named error's periodic modulation k → (f_m [cycles per WG rev.], j):
     # sidebands k ± f_m … k ± j·f_m (te_forms.refine_te_sidebands), none while naming
     te_sidebands: dict[int, tuple[float, int]] = field(default_factory=dict)
-    # the 1× error's 2× overtone locked to it: its phase q [rad] (harmonics.locked_overtone;
-    # seconds.te_2x_as_overtone), None when the 1× carries none
-    te_locked_2x: float | None = None
+    # the 1× error's 2× overtone locked to it: (the 1×'s phase p, the law's shift) [rad]
+    # (harmonics.locked_overtone; seconds.te_2x_as_overtone), None when it carries none
+    te_locked_2x: tuple[float, float] | None = None
     # hysteresis as a slip element in series with the gear (z_sat·(T/T_s − z)), not friction
     # in parallel with it (−z_sat·z): the reading a hysteresis + spring pair is tested against
     hysteresis_series: bool = False

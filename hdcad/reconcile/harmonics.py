@@ -11,6 +11,7 @@ resonance it excites, formula 021-3); seed 000 p.010 (rotation directions and ra
 
 from __future__ import annotations
 
+import math
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -47,22 +48,14 @@ def harmonic(problem: Problem, order: int, theta: dict, full: bool,
     :func:`te_basis`, or the linear joint's response to them (vibration, when ``theta``
     holds the damping); in ``frames`` (frame, second frame or None) if given, else in the
     error's own (``(0.0, None)``: at k·φ whatever the error's frame)."""
-    zeta = theta.get("damping_ratio")
-    scale = theta.get("stiffness_scale", 1.0)
     frames = frames_of(problem, order) if frames is None else frames
-    key = (order, frames, zeta, scale, full, problem.steady_state)
+    key = (order, frames, theta.get("damping_ratio"), theta.get("stiffness_scale", 1.0),
+           full, problem.steady_state)
     width = 2 * (problem.te_order + 1) + 2 * (frames[1] is not None)
     # a lower Legendre order's columns are the first of a higher one's: kept once, sliced
     if key not in problem.cache or problem.cache[key].shape[1] < width:
-        inp = problem.base.inputs
         cols = np.column_stack(te_basis(problem, order, frames))
-        if zeta is not None:  # the joint's response needs the whole time history
-            k, J = float(inp["K_Nm_per_rad"]) * scale, float(inp["J_kgm2"])
-            if problem.steady_state:
-                cols = joint.steady_response(cols, pair_rates(problem, order, frames), k, J,
-                                             zeta)
-            else:
-                cols = joint.joint_response(inp["time_s"], cols, k, J, zeta)
+        cols = _through_joint(problem, cols, lambda: pair_rates(problem, order, frames), theta)
         cols = cols if full else cols[problem.rows]
         if len(problem.cache) > 64:
             problem.cache.clear()
@@ -70,14 +63,54 @@ def harmonic(problem: Problem, order: int, theta: dict, full: bool,
     return problem.cache[key][:, :width]
 
 
+def _through_joint(problem: Problem, pairs: np.ndarray, rates, theta: dict) -> np.ndarray:
+    """(sin, cos) pairs of excitation columns on every row as the load's angle: themselves
+    (transmission), or the linear joint's response to them (vibration, when ``theta`` holds
+    the damping; the steady state at each pair's rate [rad/s], ``rates()``, or the run-up's
+    time history)."""
+    zeta = theta.get("damping_ratio")
+    if zeta is None:
+        return pairs
+    inp = problem.base.inputs
+    k = float(inp["K_Nm_per_rad"]) * theta.get("stiffness_scale", 1.0)
+    J = float(inp["J_kgm2"])
+    if problem.steady_state:
+        return joint.steady_response(pairs, rates(), k, J, zeta)
+    return joint.joint_response(inp["time_s"], pairs, k, J, zeta)
+
+
 def locked_overtone(problem: Problem, theta: dict, full: bool) -> np.ndarray:
-    """The 1× error's 2× overtone locked to it, sin(2·(1 + δ)·φ + q) with δ the 1× error's
-    frame and q ``Problem.te_locked_2x``, times P0 … P_te_order of the record position as
-    the error's own amplitude (through the joint, as :func:`harmonic`), on the fitted rows
-    or every row (n × (te_order + 1); labelled by :func:`locked_labels`)."""
-    cols = harmonic(problem, 2, theta, full, (frames_of(problem, 1)[0], None))
-    q = problem.te_locked_2x
-    return cols[:, 0::2] * np.cos(q) + cols[:, 1::2] * np.sin(q)
+    """The 1× error's 2× overtone locked to it, times P0 … P_te_order of the record position
+    as the error's own amplitude, on the fitted rows or every row (n × (te_order + 1);
+    labelled by :func:`locked_labels`). With the 1× error a·sin(a + p), a = (1 + δ)·φ in its
+    frame δ, and ``Problem.te_locked_2x`` = (p, shift): the excitation sin(2a + 2p + shift)
+    through the joint (as :func:`harmonic`), except a function of the 1×'s value in a
+    vibration test (shift π/2), whose 2× is the 1×'s excitation times the 1×'s response
+    through the joint, sin(a + p)·r(t) (a stiffness that varies once per revolution acting
+    on the twist it causes, Hill's equation): with r = α·sin(a + p) + β·cos(a + p) at each
+    instant, its 2× part (β·sin 2(a + p) − α·cos 2(a + p))/2, through the joint at 2×."""
+    p, shift = problem.te_locked_2x
+    frames = (frames_of(problem, 1)[0], None)
+    if "damping_ratio" not in theta or shift != math.pi / 2:
+        cols = harmonic(problem, 2, theta, full, frames)
+        return cols[:, 0::2] * np.cos(2 * p + shift) + cols[:, 1::2] * np.sin(2 * p + shift)
+    a = (1 + frames[0]) * problem.base.inputs["wg_angle_rad"]
+    r_s, r_c = harmonic(problem, 1, theta, True, frames)[:, :2].T
+    alpha = r_s * np.sin(a) + r_c * np.cos(a)  # the joint's gain in phase at 1×
+    beta = r_s * np.cos(a) - r_c * np.sin(a)   # and in quadrature
+    b = 2 * (a + p)
+    polys = legendre(problem.base.inputs["record_position"], problem.te_order)
+    out = []
+    for poly in polys:
+        pairs = np.column_stack([beta * poly * np.sin(b), beta * poly * np.cos(b),
+                                 alpha * poly * np.sin(b + np.pi / 2),
+                                 alpha * poly * np.cos(b + np.pi / 2)])
+        response = _through_joint(
+            problem, pairs, lambda: np.repeat(pair_rates(problem, 2, frames)[:, -1:], 2, axis=1),
+            theta)
+        out.append(0.5 * (response[:, 0] - response[:, 2]))
+    cols = np.column_stack(out)
+    return cols if full else cols[problem.rows]
 
 
 def locked_labels(order: int) -> list[str]:

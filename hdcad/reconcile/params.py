@@ -198,10 +198,12 @@ def effect_form(problem: Problem, effect: str) -> str:
                 + ("; before the load first passes ±T_h the play's own start position"
                    if problem.play_start else ""))
     if effect == "te_1x" and problem.te_locked_2x is not None:
+        p, shift = problem.te_locked_2x
         return (f"{fx.EFFECTS[effect].form}; + b(u)·sin(2·φ + q), q = "
-                f"{problem.te_locked_2x % (2 * math.pi):.3f} rad: the 1× error's own 2× "
-                "overtone, its phase locked to the 1×'s p (q = 2p + π/2 for a function of the "
-                "1×'s value, 2p for one of the member's angle; b along the record as a)")
+                f"{(2 * p + shift) % (2 * math.pi):.3f} rad: the 1× error's own 2× overtone, "
+                "its phase locked to the 1×'s p (q = 2p + π/2 for a function of the 1×'s "
+                "value, 2p for one of the member's angle; b along the record as a; in a "
+                "vibration test a function of the value acts on the 1×'s response)")
     return _loop_form(problem) if effect == "hysteresis" else fx.EFFECTS[effect].form
 
 

@@ -244,7 +244,7 @@ def te_2x_as_overtone(problem: Problem, final: Fit, best: Candidate | None, star
         return None
     p1 = math.atan2(one["cos"], one["sin"])
     effects = tuple(e for e in final.effects if e != "te_2x")
-    trials = {law: replace(copy_problem(problem), te_locked_2x=2 * p1 + shift)
+    trials = {law: replace(copy_problem(problem), te_locked_2x=(p1, shift))
               for law, shift in OVERTONE_LAWS.items()}
     fits = {law: fit_model(trial, effects, final.theta) for law, trial in trials.items()}
     law = min(fits, key=lambda k: fits[k].rss)
