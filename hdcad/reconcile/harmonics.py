@@ -51,7 +51,7 @@ def harmonic(problem: Problem, order: int, theta: dict, full: bool,
     frames = frames_of(problem, order) if frames is None else frames
     key = (order, frames, theta.get("damping_ratio"), theta.get("stiffness_scale", 1.0),
            full, problem.steady_state)
-    width = 2 * (problem.te_order + 1) + 2 * (frames[1] is not None)
+    width = te_width(problem, order, frames)
     # a lower Legendre order's columns are the first of a higher one's: kept once, sliced
     if key not in problem.cache or problem.cache[key].shape[1] < width:
         cols = np.column_stack(te_basis(problem, order, frames))
@@ -100,16 +100,15 @@ def locked_overtone(problem: Problem, theta: dict, full: bool) -> np.ndarray:
     beta = r_s * np.cos(a) - r_c * np.sin(a)   # and in quadrature
     b = 2 * (a + p)
     polys = legendre(problem.base.inputs["record_position"], problem.te_order)
-    out = []
-    for poly in polys:
-        pairs = np.column_stack([beta * poly * np.sin(b), beta * poly * np.cos(b),
-                                 alpha * poly * np.sin(b + np.pi / 2),
-                                 alpha * poly * np.cos(b + np.pi / 2)])
-        response = _through_joint(
-            problem, pairs, lambda: np.repeat(pair_rates(problem, 2, frames)[:, -1:], 2, axis=1),
-            theta)
-        out.append(0.5 * (response[:, 0] - response[:, 2]))
-    cols = np.column_stack(out)
+    # per Legendre term, two pairs: β·sin b (with its cosine partner) and α·cos b
+    pairs = np.column_stack([c * poly for poly in polys
+                             for c in (beta * np.sin(b), beta * np.cos(b),
+                                       alpha * np.cos(b), -alpha * np.sin(b))])
+    response = _through_joint(
+        problem, pairs,
+        lambda: np.repeat(pair_rates(problem, 2, frames)[:, -1:], 2 * len(polys), axis=1),
+        theta)
+    cols = 0.5 * (response[:, 0::4] - response[:, 2::4])
     return cols if full else cols[problem.rows]
 
 
@@ -155,9 +154,12 @@ def frames_of(problem: Problem, order: int) -> tuple[float, float | None]:
     return problem.te_frames.get(order, 0.0), problem.te_second_frames.get(order)
 
 
-def te_width(problem: Problem, order: int) -> int:
-    """Columns of the error at ``order``: :func:`te_basis`'s at the problem's order."""
-    return 2 * (problem.te_order + 1) + 2 * (frames_of(problem, order)[1] is not None)
+def te_width(problem: Problem, order: int,
+             frames: tuple[float, float | None] | None = None) -> int:
+    """Columns of the error at ``order``: :func:`te_basis`'s at the problem's order, in
+    ``frames`` if given, else in the error's own."""
+    frames = frames_of(problem, order) if frames is None else frames
+    return 2 * (problem.te_order + 1) + 2 * (frames[1] is not None)
 
 
 def te_basis(problem: Problem, order: int,

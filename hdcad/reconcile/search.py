@@ -93,17 +93,17 @@ def select_rig(problem: Problem, start: Fit, known: dict[str, Fit] | None = None
         # BIC_MIN of the best (then reported beside it as a reading the data barely refuse)
         near = {n: g.passes() and g.delta_bic > rival - BIC_MIN for n, g in gates.items()}
         signed = {n: near[n] and _rig_signature(problem, n, current, fits[n]) for n in gates}
-        ok = {n: signed[n] and gates[n].delta_bic > rival for n in gates}
+        beats = {n: signed[n] and gates[n].delta_bic > rival for n in gates}
         twin = {n: alone.get(GEAR_TWIN.get((problem.kind, n)), -math.inf) for n in gates}
-        held = {n: ok[n] and g.delta_bic <= twin[n] + BIC_MIN for n, g in gates.items()}
-        ok = {n: ok[n] and not held[n] for n in ok}
+        held = {n: beats[n] and g.delta_bic <= twin[n] + BIC_MIN for n, g in gates.items()}
+        ok = {n: beats[n] and not held[n] for n in gates}
         table.append([{"effect": n, "delta_bic": g.delta_bic, "cv_gain": g.cv_gain,
                        "explained_var_over_noise": g.explained, "passes": ok[n],
                        "held_for_twin": held[n],
                        # a reading the data barely refuse: within BIC_MIN below the best
                        # gear effect, or above it where its signature may not show
-                       "near_gear": near[n] and (signed[n] or (problem.kind, n) in UNSEEN)
-                       and not (signed[n] and g.delta_bic > rival)}
+                       "near_gear": near[n] and not beats[n]
+                       and (signed[n] or (problem.kind, n) in UNSEEN)}
                       for n, g in gates.items()])
         passing = [n for n in ok if ok[n]]
         if not passing:
