@@ -49,8 +49,11 @@ ROOT = Path(__file__).resolve().parents[1]
 CATALOG_DIR = ROOT / "catalog"
 RMSE_FACTOR = 1.2
 # A suite's own name for a measurement effect that hdcad names otherwise (the same physics):
-# suite H calls the twist encoder's interpolation ripple "encoder_interpolation_error".
-RIG_SYNONYMS = {"encoder_interpolation_error": "encoder_interpolation"}
+# suite H calls the twist encoder's interpolation ripple "encoder_interpolation_error", suite
+# O the output encoder's "interpolation_error" and the motor's cogging "motor_cogging".
+RIG_SYNONYMS = {"encoder_interpolation_error": "encoder_interpolation",
+                "interpolation_error": "encoder_interpolation",
+                "motor_cogging": "drive_ripple"}
 
 
 def load_suite(path: Path):

@@ -1,5 +1,5 @@
 """The load joint's damping: viscous with its run-up's free vibration, or structural in the
-steady state (:func:`hdcad.reconcile.joint.steady_response`, :func:`.refine.refine_damping`).
+steady state (:func:`hdcad.reconcile.joint.steady_response`, :func:`.damping.refine_damping`).
 
 References: the steady state is checked against the time-domain joint
 (:func:`joint.joint_response`, an exact discretisation of J·θ'' + c·θ' + K·θ = K·e) at a

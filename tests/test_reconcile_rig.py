@@ -414,3 +414,56 @@ def test_a_drift_built_up_by_the_test_s_own_work_reads_nearly_as_a_loop():
     if result["missing_effects"]:
         assert any(r.get("measurement") == "thermal_drift" and "ΔBIC" in r["text"]
                    for r in result["equivalent_readings"])
+
+
+def test_an_output_encoder_s_interpolation_error_is_the_rig_s():
+    """Suite O's output encoder with Heydemann's interpolation error (quadrature offsets and
+    an imbalance: 1× and 2× per signal period; seed 11, 1 per cell, written from the
+    contract only) in a transmission test. At O's held-out score it was taken as noise
+    (6.4× the true noise left, no disagreement); it is read as the encoder's error, its
+    period within 0.05 % of the grating's 2π/lines (the line count is the suite's own
+    record of the case), and the RMSE after at the true noise."""
+    case, result = case_run("o", "o-transmission-decoy_separable-interp-heydemann-000")
+    assert result["missing_effects"] == []
+    found = {m["effect"]: m["params"] for m in result["measurement_effects"]}
+    lines = case._diag["extra"]["lines"]
+    assert found["encoder_interpolation"]["period"]["value"] == pytest.approx(
+        2 * math.pi / lines, rel=5e-4)
+    assert result["rmse_after"] <= 1.2 * case.noise_rms
+
+
+def test_an_output_encoder_s_error_in_suite_h_is_the_rig_s():
+    """Suite H's output-encoder interpolation decoy (seed 7, 2 per cell): named nothing
+    before, now the encoder's error."""
+    case = named_case("h", "h-transmission-decoy_separable-none-interp-002", 7)
+    result = bench.reconcile_case(case)
+    assert result["missing_effects"] == []
+    assert "encoder_interpolation" in [m["effect"] for m in result["measurement_effects"]]
+
+
+def test_a_ripple_is_a_line_and_a_drift_is_a_continuum():
+    """Over an output angle that runs one way: a sinusoid of 40 periods at half the noise
+    stands thousands of times above its neighbours in the periodogram; a random walk (a
+    drift with time, power ∝ 1/f²) of ten times the noise does not stand 10× above them at
+    any period tried."""
+    rng = np.random.default_rng(2)
+    angle = np.linspace(0.0, 0.2, 3000)
+    period = 0.2 / 40
+    noise = rng.normal(0, 1.0, angle.size)
+    assert rig.is_line(0.5 * np.sin(2 * math.pi * angle / period) + noise, angle, period)
+    walk = np.cumsum(rng.normal(0, 1.0, angle.size))
+    walk *= 10 / walk.std()
+    assert not any(rig.is_line(walk + noise, angle, 0.2 / k) for k in (5, 8, 12, 20, 40))
+
+
+def test_an_output_ripple_at_a_wg_order_is_the_gear_s():
+    """A ripple k times per WG revolution (k ≤ 8) is the gear's error and its overtones,
+    not an encoder's: over 3 WG revolutions of a ratio-100 gear, periods at 3 and 8 per WG
+    revolution are kept out, 3.5 and 20.5 per revolution (an encoder of 350 or 2 050 lines)
+    are not."""
+    span = 3 * 2 * math.pi / 100
+    per_wg = lambda k: 2 * math.pi / 100 / k  # period [rad of output] of k per WG revolution
+    assert not rig.off_the_gear_orders(per_wg(3), 100, span)
+    assert not rig.off_the_gear_orders(per_wg(8), 100, span)
+    assert rig.off_the_gear_orders(per_wg(3.5), 100, span)
+    assert rig.off_the_gear_orders(per_wg(20.5), 100, span)

@@ -307,7 +307,8 @@ def transmission(data: dict, model: GearModel, catalog: Catalog) -> Baseline:
     free = np.column_stack([phi / model.ratio, np.ones(len(phi))])
     return Baseline("transmission", data["output_angle_rad"], phi / model.ratio, free,
                     ("scale_error", "offset"), ("-", "rad"), "rad", figures, notes,
-                    {"wg_angle_rad": phi, "output_angle_rad": phi / model.ratio})
+                    {"wg_angle_rad": phi, "output_angle_rad": phi / model.ratio,
+                     "measured_rad": data["output_angle_rad"]})
 
 
 def efficiency(data: dict, model: GearModel, catalog: Catalog) -> Baseline:

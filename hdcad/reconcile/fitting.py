@@ -58,6 +58,8 @@ class Problem:
     fit_branches: tuple[np.ndarray, int] | None = None
     outliers: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=int))
     step_position: float = 0.0
+    # order q of a drive's ripple per input revolution (drive.best_order), 0 for none
+    drive_order: int = 0
     te_order: int = TE_ORDER  # Legendre order of the TE amplitude and phase
     # harmonics of the named errors at k cycles per WG revolution (a wave generator's
     # ellipse series: 4× and 6× beside 2×), each with a constant amplitude: none while
@@ -135,6 +137,9 @@ class Problem:
     # a spring with structural damping (joint.steady_response) instead of the viscous joint's
     # run-up: the latter while effects are named, the better once they are (refine_damping)
     steady_state: bool = False
+    # vibration: the viscous joint's damper on its twist θ − e (the gear's own damping)
+    # instead of on the load's motion: the latter while effects are named (refine_damping)
+    relative_damping: bool = False
     cache: dict = field(default_factory=dict)
     _plane: preisach.PreisachPlane | None = field(default=None, repr=False)
 

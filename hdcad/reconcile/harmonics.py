@@ -50,7 +50,7 @@ def harmonic(problem: Problem, order: int, theta: dict, full: bool,
     error's own (``(0.0, None)``: at k·φ whatever the error's frame)."""
     frames = frames_of(problem, order) if frames is None else frames
     key = (order, frames, theta.get("damping_ratio"), theta.get("stiffness_scale", 1.0),
-           full, problem.steady_state)
+           full, problem.steady_state, problem.relative_damping)
     width = te_width(problem, order, frames)
     # a lower Legendre order's columns are the first of a higher one's: kept once, sliced
     if key not in problem.cache or problem.cache[key].shape[1] < width:
@@ -76,7 +76,10 @@ def _through_joint(problem: Problem, pairs: np.ndarray, rates, theta: dict) -> n
     J = float(inp["J_kgm2"])
     if problem.steady_state:
         return joint.steady_response(pairs, rates(), k, J, zeta)
-    return joint.joint_response(inp["time_s"], pairs, k, J, zeta)
+    response = joint.joint_response(inp["time_s"], pairs, k, J, zeta)
+    if problem.relative_damping:
+        return joint.relative_damping_response(inp["time_s"], response, k, J, zeta)
+    return response
 
 
 def locked_overtone(problem: Problem, theta: dict, full: bool) -> np.ndarray:

@@ -115,6 +115,18 @@ def joint_filter(wn: float, zeta: float, dt: float) -> tuple[np.ndarray, np.ndar
     return b, a
 
 
+def relative_damping_response(time_s: np.ndarray, response_rad: np.ndarray,
+                              K_Nm_per_rad: float, J_kgm2: float, zeta: float) -> np.ndarray:
+    """Load angle θ [rad] when the joint's damper acts on its twist θ − e (the gear's own
+    damping, in the mesh and the flexspline) instead of on the load's motion:
+    J·θ'' + c·(θ' − e') + K·(θ − e) = 0, from :func:`joint_response`'s θ_a of
+    J·θ'' + c·θ' + K·θ = K·e, the same system driven by (1 + (c/K)·s)·e, so
+    θ = θ_a + (c/K)·θ_a', c/K = 2ζ/ω_n (``response_rad`` n or n × m, differentiated in time
+    by second-order differences)."""
+    wn = math.sqrt(K_Nm_per_rad / J_kgm2)
+    return response_rad + (2.0 * zeta / wn) * np.gradient(response_rad, time_s, axis=0)
+
+
 def steady_response(pairs: np.ndarray, omega_rad_s: np.ndarray, K_Nm_per_rad: float,
                     J_kgm2: float, zeta: float) -> np.ndarray:
     """Load angle θ [rad] in the steady state of each instant's excitation frequency, for

@@ -80,7 +80,11 @@ def columns(problem: Problem, effects: tuple[str, ...], theta: dict[str, float],
     factor = None
     for name in effects:
         th = {p.name: theta[key_of(name, p.name)] for p in parameters_of(name, problem.kind)}
-        if name in rig.RIG_EFFECTS:
+        if name == "drive_ripple":  # through the joint as the error is, in the motor's frame
+            add(name, ["a", "b"], harmonic(problem, problem.drive_order, theta, full,
+                                           (0.0, None))[:, :2] if problem.drive_order
+                else np.zeros((n, 2)))
+        elif name in rig.RIG_EFFECTS:
             names, block = rig.columns(name, problem.kind, inp, problem.step_position, th)
             add(name, names, block)
         elif name == "hysteresis":

@@ -14,6 +14,7 @@ from .fitting import Fit, Problem
 from .gates import BIC_MIN, EXPLAINED_MIN, rss_bic_gain
 from .model_columns import drift_labels, parameters_of, stribeck_takes
 from .harmonics import TE_LABELS, frames_of, legendre, te_order_of
+from .drive import crossing_rpm
 from .rig import RIG_EFFECTS, TORQUE_GAIN_KEY, TORQUE_OFFSET_KEY
 from .stribeck import hersey_params
 
@@ -49,6 +50,14 @@ def rig_params(problem: Problem, fit: Fit, effect: str) -> dict[str, dict]:
     if effect == "encoder_interpolation":
         out["period"] = {"value": fit.theta["encoder_interpolation.period"], "unit": unit}
         out["amplitude"] = {"value": math.hypot(b["a1"], b["b1"]), "unit": unit}
+    if effect == "drive_ripple":
+        stiffness = fit.theta.get("stiffness_scale", 1.0)
+        out["order"] = {"value": problem.drive_order, "unit": "per input revolution"}
+        out["amplitude"] = {"value": math.hypot(b["a"], b["b"]), "unit": unit}
+        out["resonance_speed"] = {"value": crossing_rpm(problem, problem.drive_order,
+                                                        stiffness), "unit": "r/min"}
+        out["damping_ratio"] = {"value": fit.theta["damping_ratio"], "unit": "-"}
+        out["stiffness_scale"] = {"value": stiffness, "unit": "-"}
     if effect == "encoder_eccentricity":
         out["amplitude"] = {"value": math.hypot(b["a"], b["b"]), "unit": unit}
     if effect == "sensor_gain" and TORQUE_GAIN_KEY in fit.theta:
@@ -69,6 +78,13 @@ def rig_entry(problem: Problem, fit: Fit, effect: str) -> dict:
                             f"(torque_gain = {g:.4g}; a shunt or calibration constant): the "
                             f"catalog curve's corners sit at {1 + g:.3f} × T1 and T2 of the "
                             "recorded torque")
+    if effect == "drive_ripple":
+        entry["reading"] = (
+            f"an excitation {problem.drive_order} times per input revolution (amplitude "
+            f"{params['amplitude']['value']:.3g} rad at the output) meets the load's "
+            f"resonance at {params['resonance_speed']['value']:.4g} r/min: the drive's "
+            "torque ripple (a motor's cogging or electrical ripple), or a harmonic of the "
+            "gear's own error the catalog does not name; check the motor and coupling")
     if "T_off" in params:
         entry["reading"] = (f"the torque channel's zero is off by {params['T_off']['value']:.4g} "
                             "N·m (an untared bridge, a tare taken under load): the gear "

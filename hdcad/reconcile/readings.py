@@ -110,8 +110,9 @@ def nuisances(problem: Problem, fit: Fit) -> list[dict]:
                     "text": f"structural loss factor η = {eta:.3g} (damps the resonance as a "
                             f"viscous ζ = {eta / 2:.3g})"})
     elif "damping_ratio" in fit.theta:
+        where = " (a damper on the joint's twist)" if problem.relative_damping else ""
         out.append({"name": "damping_ratio", "value": fit.theta["damping_ratio"], "unit": "-",
-                    "text": f"damping ratio {fit.theta['damping_ratio']:.3g}"})
+                    "text": f"damping ratio {fit.theta['damping_ratio']:.3g}{where}"})
     eta = _beta(fit, "eta0")
     if eta is not None:
         out.append({"name": "efficiency_level", "value": eta, "unit": "%",

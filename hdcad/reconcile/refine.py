@@ -23,6 +23,7 @@ from .baseline import COMPLIANCE_SCALE_BOUNDS, STIFFNESS_SPREAD
 from .fitting import Fit, Problem, best_setting, finish, fit_model, shapes_in_use
 from .frames import refine_frames
 from .gates import EXPLAINED_MIN, beyond, bic_best, effective_n
+from .damping import refine_damping
 from .joint_fit import refine_spring
 from .loops import refine_creep, refine_hysteresis, refine_plays, refine_preisach
 from .params import linear_of, play_along_record
@@ -73,31 +74,6 @@ def refine(problem: Problem, fit: Fit) -> Fit:
     fit = refine_plays(problem, refine_preisach(problem, fit))
     fit = refine_creep(problem, refine_duhem(problem, refine_flank_friction(problem, fit)))
     return refine_stiffness(problem, refine_opening(problem, refine_hersey(problem, fit)))
-
-
-def refine_damping(problem: Problem, fit: Fit) -> Fit:
-    """Vibration: the linear joint's response as the steady state through a spring with
-    structural damping (:func:`.joint.steady_response`, loss factor η = 2ζ) in place of the
-    viscous joint's run-up, kept when it lowers the BIC by more than ``BIC_MIN`` (the same
-    parameters) and explains ``EXPLAINED_MIN`` noise variances more (:func:`.gates.beyond`:
-    at thousands of rows a sliver of a viscous joint's misfit passes the BIC alone). A
-    material's loss factor hardly changes with frequency, so structural damping damps the
-    resonance as a viscous ζ = η/2 does but the response off it differently, and it has no
-    free vibration after the resonance: a slow sweep or order-tracked data carry none."""
-    te = [e for e in fit.effects if e.startswith("te_")]
-    if problem.kind != "vibration" or not te or "damping_ratio" not in fit.theta:
-        return fit
-    problem.steady_state = True
-    best = fit_model(problem, fit.effects, fit.theta)
-    if not beyond(problem, fit, best, explained_min=EXPLAINED_MIN):
-        problem.steady_state = False
-        return fit
-    problem.notes.append(
-        f"joint: the steady-state response through a spring with structural damping (loss "
-        f"factor η = {2 * best.theta['damping_ratio']:.3g}) fits better than the viscous "
-        f"joint's run-up (RMSE {math.sqrt(best.rss / fit.rss):.2f}× of it): no free "
-        "vibration after the resonance, as a material's loss or a slow sweep gives")
-    return best
 
 
 def refine_stiffness(problem: Problem, fit: Fit) -> Fit:

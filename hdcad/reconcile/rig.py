@@ -21,6 +21,7 @@ import functools
 
 import numpy as np
 
+from .drive import DRIVE_RIPPLE
 from .effects import Effect, Parameter, key_of
 
 
@@ -76,21 +77,22 @@ RIG_EFFECTS: dict[str, Effect] = {e.name: e for e in (
         kinds=("transmission", "vibration")),
     Effect(
         name="encoder_interpolation",
-        description=("The twist encoder's interpolation error: a ripple that repeats once "
+        description=("An angle encoder's interpolation error: a ripple that repeats once "
                      "per signal period of its grating (an encoder of 9 000 – 36 000 lines "
                      "reads a few per cent of a 36 – 144 arc-second period wrong), periodic "
-                     "in the measured angle, not in the torque."),
+                     "in the measured angle (the twist in torsion, the output angle in "
+                     "transmission), not in the torque nor in the wave generator's angle."),
         form=("y += Σ_k [a_k·sin(2πk·y/p) + b_k·cos(2πk·y/p)], k = 1 … 3, y the measured "
-              "twist, p the signal period (started at the peak of the residual's "
-              "periodogram over the measured angle, then fitted within ±10 %); the "
-              "harmonics are the error's own and those of reading it at the measured, not "
-              "the true, angle"),
+              "angle, p the signal period (started at the peak of the residual's "
+              "periodogram over the measured angle, away from the wave generator's orders "
+              "in transmission, then fitted within ±10 %); the harmonics are the error's "
+              "own and those of reading it at the measured, not the true, angle"),
         parameters=(*(_linear(f"{ab}{k}", "rad", f"{part} part of harmonic {k}")
                       for k in range(1, INTERPOLATION_HARMONICS + 1)
                       for ab, part in (("a", "sine"), ("b", "cosine"))),
                     Parameter("period", "rad", "signal period of the encoder", 0.9, 1.1,
                               "angle_period", start=1.0)),
-        kinds=("torsion",)),
+        kinds=("torsion", "transmission")),
     Effect(
         name="sensor_play",
         description=("The twist sensor's body turns in the play of its anti-rotation slot "
@@ -126,6 +128,7 @@ RIG_EFFECTS: dict[str, Effect] = {e.name: e for e in (
         parameters=(Parameter("T_off", "N·m", "zero offset of the torque channel",
                               -TORQUE_OFFSET_LIMIT, TORQUE_OFFSET_LIMIT, "T0", start=0.0),),
         kinds=("torsion",)),
+    DRIVE_RIPPLE,
 )}
 
 RIG_NAMES = tuple(RIG_EFFECTS)
@@ -242,10 +245,15 @@ def ripple_everywhere(before: np.ndarray, after: np.ndarray, angle: np.ndarray) 
     return overall > 0 and min(gains) >= RIPPLE_SHARE_MIN * overall
 
 
-def angle_period(residual: np.ndarray, angle: np.ndarray) -> float:
+def angle_period(residual: np.ndarray, angle: np.ndarray,
+                 excluded: tuple[float, ...] = (), width: float = 0.0,
+                 fine: bool = False) -> float:
     """Signal period [unit of ``angle``] of the strongest ripple of ``residual`` that
     repeats in the measured ``angle``: the peak of its periodogram over the angle
-    (:func:`periodogram_peak`, bins of a quarter of the shortest period)."""
+    (:func:`periodogram_peak`, bins of a quarter of the shortest period), away from the
+    frequencies ``excluded`` [1/unit of ``angle``] by more than ``width``; ``fine`` for an
+    angle that runs one way over many periods (an output angle), whose fit has a minimum in
+    the period narrower than the padded grid's step."""
     span = float(np.ptp(angle)) or 1.0
     # rows at the same angle (the readings of a dwell) count once; a period near the step of
     # a quantised reading would alias into a slow function of it
@@ -255,22 +263,91 @@ def angle_period(residual: np.ndarray, angle: np.ndarray) -> float:
     if shortest >= longest:
         return longest
     bins = int(np.ceil(4 * span / shortest))
-    return 1.0 / periodogram_peak(residual, angle, bins, (1.0 / longest, 1.0 / shortest))
+    return 1.0 / periodogram_peak(residual, angle, bins, (1.0 / longest, 1.0 / shortest),
+                                  excluded, width, fine)
 
 
 def periodogram_peak(values: np.ndarray, angle: np.ndarray, bins: int,
-                     band: tuple[float, float]) -> float:
-    """Frequency [1/unit of ``angle``] within ``band`` (low, high) where the periodogram of
-    ``values`` over ``angle`` peaks: the rows summed into ``bins`` bins of a uniform grid
-    over the span and transformed by FFT, zero-padded fourfold to steps of a quarter of the
-    record's resolution 1/span (a binned stand-in for the Lomb–Scargle periodogram of
-    unevenly sampled data; Lomb 1976, Scargle 1982)."""
+                     band: tuple[float, float], excluded: tuple[float, ...] = (),
+                     width: float = 0.0, fine: bool = False) -> float:
+    """Frequency [1/unit of ``angle``] within ``band`` (low, high), and further than
+    ``width`` from each of ``excluded``, where the periodogram of ``values`` over ``angle``
+    peaks: the rows summed into ``bins`` bins of a uniform grid over the span and
+    transformed by FFT, zero-padded fourfold to steps of a quarter of the record's
+    resolution 1/span (a binned stand-in for the Lomb–Scargle periodogram of unevenly
+    sampled data; Lomb 1976, Scargle 1982), then to a sixty-fourth of it about the peak
+    when ``fine``."""
     span = float(np.ptp(angle)) or 1.0
     summed = np.bincount(_bins(angle, span, bins), values - values.mean(), bins)
     power = np.abs(np.fft.rfft(summed, 4 * bins)) ** 2
     freqs = np.fft.rfftfreq(4 * bins, span / bins)
     inside = (freqs >= band[0]) & (freqs <= band[1])
-    return float(freqs[inside][int(np.argmax(power[inside]))])
+    for f in excluded:
+        inside &= np.abs(freqs - f) > width
+    if not inside.any():
+        return band[0]
+    peak = float(freqs[inside][int(np.argmax(power[inside]))])
+    if not fine:
+        return peak
+    step = 1.0 / (4.0 * span)
+    fine = peak + np.linspace(-step, step, 33)
+    centres = (np.arange(bins) + 0.5) * span / bins
+    fine_power = np.abs(np.exp(-2j * np.pi * np.outer(fine, centres)) @ summed) ** 2
+    return float(fine[int(np.argmax(fine_power))])
+
+
+# A ripple is a line in the periodogram: its power at least LINE_RATIO times the median over
+# the band a factor LINE_BAND either side of it (outside LINE_STEPS steps of the record's
+# resolution about it). A drift with time (a random walk's power falls as 1/f²) is a
+# continuum whose strongest ordinate stands a few times above its neighbours at most.
+LINE_RATIO = 10.0
+LINE_BAND = 1.5
+LINE_STEPS = 2.0
+
+
+def is_line(residual: np.ndarray, angle: np.ndarray, period: float) -> bool:
+    """Whether ``residual`` has a line at ``period`` [unit of ``angle``] in its periodogram
+    over ``angle`` standing ``LINE_RATIO`` above the continuum about it."""
+    span = float(np.ptp(angle)) or 1.0
+    f0 = 1.0 / period
+    resolution = 1.0 / span
+    freqs = np.linspace(f0 / LINE_BAND, f0 * LINE_BAND, 256)
+    near = np.abs(freqs - f0) <= LINE_STEPS * resolution
+    if near.all():
+        return False
+    power = _dft_power(residual - residual.mean(), angle, np.append(freqs[~near], f0))
+    return bool(power[-1] >= LINE_RATIO * np.median(power[:-1]))
+
+
+def _dft_power(values: np.ndarray, angle: np.ndarray, freqs: np.ndarray) -> np.ndarray:
+    """|Σ v·exp(−2πi·f·angle)|² at each of ``freqs`` (in blocks, to bound the memory)."""
+    out = np.empty(len(freqs))
+    for i in range(0, len(freqs), 32):
+        f = freqs[i:i + 32]
+        out[i:i + 32] = np.abs(np.exp(-2j * np.pi * np.outer(f, angle)) @ values) ** 2
+    return out
+
+
+# The wave generator's orders an output encoder's ripple is kept away from in transmission
+# (the gear's own error and its overtones repeat at k per WG revolution), by this many steps
+# of the record's resolution 1/span (a line's main lobe: closer, the two are one line)
+GEAR_ORDERS = 8
+GEAR_ORDER_STEPS = 1.0
+
+
+def gear_orders(ratio: float, span_rad: float) -> tuple[tuple[float, ...], float]:
+    """The frequencies [1/rad of output angle] of the WG orders 1 … ``GEAR_ORDERS`` for a
+    gear of ``ratio`` R (k·R/2π: k per WG revolution) and the width kept from each
+    (``GEAR_ORDER_STEPS`` of the resolution 1/span of an output-angle record ``span_rad``)."""
+    return (tuple(k * ratio / (2.0 * np.pi) for k in range(1, GEAR_ORDERS + 1)),
+            GEAR_ORDER_STEPS / (span_rad or 1.0))
+
+
+def off_the_gear_orders(period_rad: float, ratio: float, span_rad: float) -> bool:
+    """Whether an output-angle ripple of ``period_rad`` stays away from every WG order
+    (:func:`gear_orders`): one on a WG order is as much the gear's error as the encoder's."""
+    orders, width = gear_orders(ratio, span_rad)
+    return all(abs(1.0 / period_rad - f) > width for f in orders)
 
 
 def _bins(angle: np.ndarray, span: float, count: int) -> np.ndarray:

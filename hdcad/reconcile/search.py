@@ -34,12 +34,15 @@ import itertools
 import math
 from dataclasses import replace
 
+import numpy as np
+
 from . import effects as fx
-from . import rig, seconds, springs
+from . import drive, rig, seconds, springs
 from .fitting import Fit, Problem, fit_model, rss_at
 from .gates import (BIC_MIN, GATE_NOTE, SECOND_TRY_EXPLAINED_MIN, Candidate, Gate, bic_gain,
                     effective_n, gate, has_evidence, round_noise)
 from .loops import THROUGH_GEAR, preisach_forms, series_plays, series_slip, use_preisach
+from .noise import noise_rms
 
 __all__ = ["BIC_MIN", "GATE_NOTE", "Candidate", "Gate", "gate", "round_noise", "select_gear",
            "select_rig", "recheck_rig"]
@@ -76,10 +79,13 @@ def select_rig(problem: Problem, start: Fit, known: dict[str, Fit] | None = None
                 problem.step_position = rig.step_position(
                     current.residual(problem),
                     problem.base.inputs["record_position"][problem.rows])
+            if name == "drive_ripple":
+                problem.drive_order = drive.best_order(problem, current.residual(problem))
             if name == "encoder_interpolation":
                 problem.scales["angle_period"] = rig.angle_period(
                     current.residual(problem),
-                    problem.base.inputs["measured_rad"][problem.rows])
+                    problem.base.inputs["measured_rad"][problem.rows],
+                    *_gear_orders(problem))
             fits[name] = fit_model(problem, current.effects + (name,), current.theta)
         singles = {n: known[n] if n in known
                    else fit_model(problem, current.effects + (n,), current.theta)
@@ -127,17 +133,46 @@ def _rig_signature(problem: Problem, name: str, without: Fit, fit: Fit) -> bool:
     """A measurement effect's own signature, beyond a better fit: an encoder's
     interpolation ripple is the same over the whole span of the angle; a reading's play
     keeps the branches apart at the torque's extremes, where a loop of the gear closes; a
-    torque channel's gain moves the catalog curve's corners."""
+    torque channel's gain moves the catalog curve's corners; a drive's ripple is what rings
+    where its resonance crossing is."""
     inputs, rows = problem.base.inputs, problem.rows
     if name == "sensor_gain" and problem.kind == "torsion":
         return _corners_moved(problem, without, fit)
     if name == "sensor_play":
         return rig.apart_at_the_tips(without.residual(problem), inputs["torque_Nm"][rows],
                                      inputs["branch_direction"][rows])
+    if name == "drive_ripple":
+        after = fit.residual(problem)
+        return drive.coherent_at_crossing(without.residual(problem), after, noise_rms(after))
     if name != "encoder_interpolation":
         return True
-    return rig.ripple_everywhere(without.residual(problem), fit.residual(problem),
-                                 inputs["measured_rad"][rows])
+    angle = inputs["measured_rad"][rows]
+    if problem.kind == "transmission" and not _output_ripple(problem, without, fit, angle):
+        return False
+    return rig.ripple_everywhere(without.residual(problem), fit.residual(problem), angle)
+
+
+def _output_ripple(problem: Problem, without: Fit, fit: Fit, angle: np.ndarray) -> bool:
+    """An output encoder's ripple in transmission: away from the wave generator's orders
+    (there it is as much the gear's error) and a line in the periodogram over the output
+    angle, which runs one way over many of its periods (a drift with time is a continuum)."""
+    period = fit.theta[_PERIOD_KEY]
+    return (rig.off_the_gear_orders(period, problem.base.figures["ratio"][0],
+                                    float(np.ptp(angle)))
+            and rig.is_line(without.residual(problem), angle, period))
+
+
+_PERIOD_KEY = "encoder_interpolation.period"
+
+
+def _gear_orders(problem: Problem) -> tuple[tuple[float, ...], float, bool]:
+    """The WG orders an output encoder's ripple is kept from in transmission, and that its
+    period is looked for finely there (the output angle runs one way over many periods);
+    neither in torsion, where the measured angle is the twist."""
+    if problem.kind != "transmission":
+        return (), 0.0, False
+    angle = problem.base.inputs["measured_rad"][problem.rows]
+    return rig.gear_orders(problem.base.figures["ratio"][0], float(np.ptp(angle))) + (True,)
 
 
 def _corners_moved(problem: Problem, without: Fit, fit: Fit) -> bool:
