@@ -12,7 +12,10 @@ first.
 
 The ripple's response is the transmission error's (:func:`.harmonics.harmonic` at order
 q, in the motor's own frame, through the same joint with the same damping and stiffness):
-a torque ripple T_r acting on the joint and a kinematic error e = T_r/K excite it alike.
+the servo holds the motor's speed, so its torque ripple shows as a ripple of the input's
+angle, which the gear passes on as a kinematic excitation of the joint, as it does its own
+error. Once a gear error is named, a ripple at one of that error's overtone orders is its
+overtone rather than the drive's (:func:`at_a_named_overtone`).
 
 References
 ----------
@@ -32,6 +35,7 @@ from scipy.signal import hilbert
 
 from . import joint
 from .effects import EFFECTS, Effect, Parameter
+from .noise import noise_rms
 
 if TYPE_CHECKING:
     from .fitting import Problem
@@ -75,11 +79,18 @@ DRIVE_RIPPLE = Effect(
     kinds=("vibration",))
 
 
+def natural_frequency(problem: Problem, stiffness_scale: float = 1.0) -> float:
+    """f_n [Hz] of the load on the gear's spring K1 × ``stiffness_scale`` (formula 021-3)."""
+    inp = problem.base.inputs
+    return math.sqrt(stiffness_scale * float(inp["K_Nm_per_rad"])
+                     / float(inp["J_kgm2"])) / (2 * math.pi)
+
+
 def orders(problem: Problem) -> list[int]:
     """The orders whose resonance crossing the run-up passes (f_n within ``FN_SHARES`` of
     the catalog's) and that the sampling follows."""
     inp = problem.base.inputs
-    fn = math.sqrt(float(inp["K_Nm_per_rad"]) / float(inp["J_kgm2"])) / (2 * math.pi)
+    fn = natural_frequency(problem)
     f_in = inp["input_speed_rpm"][problem.rows] / 60.0
     low, high = float(np.min(f_in)), float(np.max(f_in))
     dt = np.diff(inp["time_s"])
@@ -115,19 +126,30 @@ def best_order(problem: Problem, residual: np.ndarray) -> int:
 
 def crossing_rpm(problem: Problem, order: int, stiffness_scale: float) -> float:
     """Input speed [r/min] at which the order's excitation meets the joint's resonance."""
-    inp = problem.base.inputs
-    fn = math.sqrt(stiffness_scale * float(inp["K_Nm_per_rad"]) / float(inp["J_kgm2"]))
-    return 60.0 * fn / (2 * math.pi) / order
+    return 60.0 * natural_frequency(problem, stiffness_scale) / order
 
 
-def coherent_at_crossing(before: np.ndarray, after: np.ndarray, sigma: float) -> bool:
-    """Whether the ripple fitted (residual ``before`` → ``after`` on the fitted rows, in
-    time order) explains at least ``COHERENT_SHARE_MIN`` of the structure above the noise
-    (``sigma``) where its response rings: the rows within half the peak of the response's
-    envelope (the analytic signal's magnitude)."""
-    response = before - after
-    envelope = np.abs(hilbert(response))
+def at_a_named_overtone(problem: Problem, effects: tuple[str, ...],
+                        overtones: dict[str, tuple[int, ...]]) -> bool:
+    """Whether the drive's ripple in ``effects`` sits at an overtone order (``overtones``:
+    each gear error's) of a gear error named beside it: then it is that error's harmonic."""
+    return "drive_ripple" in effects and any(
+        problem.drive_order in overtones.get(e, ()) for e in effects)
+
+
+def coherent_at_crossing(problem: Problem, without, fit) -> bool:
+    """Whether the ripple fitted (``without`` → ``fit``) explains at least
+    ``COHERENT_SHARE_MIN`` of the structure above the noise where its response rings: the
+    rows within half the peak of the response's envelope (the analytic signal's magnitude),
+    on every row in time order (the fitted rows of a long record are a random subset), less
+    the gross outliers."""
+    keep = np.ones(len(problem.base.y), bool)
+    keep[problem.outliers] = False
+    before = (problem.base.y - without.prediction)[keep]
+    after = (problem.base.y - fit.prediction)[keep]
+    envelope = np.abs(hilbert(before - after))
     ring = envelope >= 0.5 * float(np.max(envelope))
+    sigma = noise_rms(after)
     structure = float(np.sum(before[ring] ** 2)) - ring.sum() * sigma ** 2
     explained = float(np.sum(before[ring] ** 2) - np.sum(after[ring] ** 2))
-    return structure > 0 and explained >= COHERENT_SHARE_MIN * structure
+    return bool(structure > 0 and explained >= COHERENT_SHARE_MIN * structure)

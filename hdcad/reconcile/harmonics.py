@@ -76,10 +76,8 @@ def _through_joint(problem: Problem, pairs: np.ndarray, rates, theta: dict) -> n
     J = float(inp["J_kgm2"])
     if problem.steady_state:
         return joint.steady_response(pairs, rates(), k, J, zeta)
-    response = joint.joint_response(inp["time_s"], pairs, k, J, zeta)
-    if problem.relative_damping:
-        return joint.relative_damping_response(inp["time_s"], response, k, J, zeta)
-    return response
+    return joint.joint_response(inp["time_s"], pairs, k, J, zeta,
+                                on_twist=problem.relative_damping)
 
 
 def locked_overtone(problem: Problem, theta: dict, full: bool) -> np.ndarray:

@@ -39,9 +39,13 @@ _FLOAT_COLUMNS = 16
 
 # --------------------------------------------------------------------------- linear joint
 def joint_response(time_s: np.ndarray, excitation_rad: np.ndarray, K_Nm_per_rad: float,
-                   J_kgm2: float, zeta: float) -> np.ndarray:
+                   J_kgm2: float, zeta: float, on_twist: bool = False) -> np.ndarray:
     """Load angle θ [rad] of J·θ'' + c·θ' + K·θ = K·e(t), c = 2ζ·√(K·J) (``excitation_rad``
-    n or n × m: one response per column).
+    n or n × m: one response per column); with ``on_twist`` the damper acts on the joint's
+    twist θ − e instead (the gear's own damping, in the mesh and the flexspline), so the
+    error drives the load through it as well as through the spring:
+    J·θ'' + c·(θ' − e') + K·(θ − e) = 0, whose θ is the first system's θ_a + (c/K)·θ_a'
+    (the same system driven by (1 + (c/K)·s)·e), c/K = 2ζ/ω_n, θ_a' from the same state.
 
     The load starts at rest in static equilibrium, θ(0) = e(0), θ'(0) = 0 (a run-up from
     standstill). Exact discretisation of the linear joint with e(t) linear between samples
@@ -49,16 +53,17 @@ def joint_response(time_s: np.ndarray, excitation_rad: np.ndarray, K_Nm_per_rad:
     (:func:`joint_filter`), the same modal recursion step by step otherwise. 0 ≤ ζ < 1.
     """
     wn = math.sqrt(K_Nm_per_rad / J_kgm2)
+    weight = 2.0 * zeta / wn if on_twist else 0.0
     dt = np.diff(time_s)
     e = np.asarray(excitation_rad, dtype=float)
     if dt.size and np.ptp(dt) <= 1e-6 * dt.mean():
-        b, a = joint_filter(wn, zeta, float(dt.mean()))
+        b, a = joint_filter(wn, zeta, float(dt.mean()), weight)
         # steady state of a constant input; columns of a 2-D excitation filtered at once
         zi = np.multiply.outer(signal.lfilter_zi(b, a), e[0])
         return signal.lfilter(b, a, e, axis=0, zi=zi)[0]
     if e.ndim == 2:
-        return np.column_stack([_joint_uneven(dt, col, wn, zeta) for col in e.T])
-    return _joint_uneven(dt, e, wn, zeta)
+        return np.column_stack([_joint_uneven(dt, col, wn, zeta, weight) for col in e.T])
+    return _joint_uneven(dt, e, wn, zeta, weight)
 
 
 def _modes(wn: float, zeta: float):
@@ -69,27 +74,31 @@ def _modes(wn: float, zeta: float):
     return lam, V, np.linalg.inv(V)
 
 
-def _joint_uneven(dt: np.ndarray, e: np.ndarray, wn: float, zeta: float) -> np.ndarray:
-    """Modal first-order-hold recursion with a step of its own per sample interval."""
+def _joint_uneven(dt: np.ndarray, e: np.ndarray, wn: float, zeta: float,
+                  velocity_weight: float = 0.0) -> np.ndarray:
+    """Modal first-order-hold recursion with a step of its own per sample interval; the
+    output θ + ``velocity_weight``·θ' (θ = q + q̄, θ' = λq + conj(λq) in the first mode q)."""
     lam, V, Vinv = _modes(wn, zeta)
     beta = (Vinv @ np.array([0.0, wn * wn]))[0]          # first mode; the second is its conjugate
     lam0 = lam[0]
+    read = 1.0 + velocity_weight * lam0
     a = np.exp(lam0 * dt)
     g0 = (a - 1.0) / lam0
     g1 = (a - 1.0 - lam0 * dt) / (lam0 * lam0 * dt)
     b_now, b_next = (g0 - g1) * beta, g1 * beta
     q = (Vinv @ np.array([e[0], 0.0]))[0]               # static equilibrium θ = e, θ' = 0
     out = np.empty(len(e))
-    out[0] = 2.0 * q.real
+    out[0] = 2.0 * (read * q).real
     for k in range(len(dt)):
         q = a[k] * q + b_now[k] * e[k] + b_next[k] * e[k + 1]
-        out[k + 1] = 2.0 * q.real                         # θ = q + conj(q)
+        out[k + 1] = 2.0 * (read * q).real
     return out
 
 
-def joint_filter(wn: float, zeta: float, dt: float) -> tuple[np.ndarray, np.ndarray]:
+def joint_filter(wn: float, zeta: float, dt: float, velocity_weight: float = 0.0
+                 ) -> tuple[np.ndarray, np.ndarray]:
     """IIR coefficients (b, a) of θ'' + 2ζω·θ' + ω²·θ = ω²·e sampled every dt [s], e linear
-    between samples (first-order hold), 0 ≤ ζ < 1.
+    between samples (first-order hold), 0 ≤ ζ < 1, read as θ + ``velocity_weight``·θ'.
 
     Modal form: A = V·Λ·V⁻¹ with λ = −ζω ± iω√(1 − ζ²); x[k+1] = Φ·x[k] + (M0 − M1)·e[k] +
     M1·e[k+1] with Φ = e^(AΔ), M0 = ∫₀^Δ e^(Aτ)dτ·B, M1 = ∫₀^Δ e^(A(Δ−s))·s/Δ ds·B, all
@@ -106,25 +115,14 @@ def joint_filter(wn: float, zeta: float, dt: float) -> tuple[np.ndarray, np.ndar
     # θ[k] = ξ₀[k] + M1₀·e[k]
     bd = phi @ m1 + m0 - m1
     a = np.array([1.0, -np.trace(phi), np.linalg.det(phi)])
-    # C·adj(zI − Φ)·bd/det + D with C = [1, 0], D = M1₀: first row of the adjugate is
-    # [z − Φ₁₁, Φ₀₁]
-    n1 = bd[0]
-    n2 = phi[0, 1] * bd[1] - phi[1, 1] * bd[0]
-    d0 = m1[0]
+    # C·adj(zI − Φ)·bd/det + D with C = [1, w] (θ + w·θ'), D = C·M1; the adjugate is
+    # [[z − Φ₁₁, Φ₀₁], [Φ₁₀, z − Φ₀₀]]
+    w = velocity_weight
+    n1 = bd[0] + w * bd[1]
+    n2 = (phi[0, 1] * bd[1] - phi[1, 1] * bd[0]) + w * (phi[1, 0] * bd[0] - phi[0, 0] * bd[1])
+    d0 = m1[0] + w * m1[1]
     b = np.array([d0, n1 + d0 * a[1], n2 + d0 * a[2]])
     return b, a
-
-
-def relative_damping_response(time_s: np.ndarray, response_rad: np.ndarray,
-                              K_Nm_per_rad: float, J_kgm2: float, zeta: float) -> np.ndarray:
-    """Load angle θ [rad] when the joint's damper acts on its twist θ − e (the gear's own
-    damping, in the mesh and the flexspline) instead of on the load's motion:
-    J·θ'' + c·(θ' − e') + K·(θ − e) = 0, from :func:`joint_response`'s θ_a of
-    J·θ'' + c·θ' + K·θ = K·e, the same system driven by (1 + (c/K)·s)·e, so
-    θ = θ_a + (c/K)·θ_a', c/K = 2ζ/ω_n (``response_rad`` n or n × m, differentiated in time
-    by second-order differences)."""
-    wn = math.sqrt(K_Nm_per_rad / J_kgm2)
-    return response_rad + (2.0 * zeta / wn) * np.gradient(response_rad, time_s, axis=0)
 
 
 def steady_response(pairs: np.ndarray, omega_rad_s: np.ndarray, K_Nm_per_rad: float,

@@ -54,19 +54,23 @@ _BAND_WIDTHS_K = (2.0, 6.0, 18.0)
 
 
 def refine(problem: Problem, fit: Fit) -> Fit:
-    """The named model's final form: the named errors' frames, then the joint's steady state
-    with structural damping, or else the joint on the catalog curve where the twist leaves
-    its first segment (vibration); otherwise the TE's overtones and modulation order, the
-    viscosity law, the loop's Bouc–Wen form, a play held by friction and its lost motion
-    along the record, then a Preisach relay sum in place of the Bouc–Wen loop, and a sum of
-    friction elements in place of either, where BIC prefers them; last, the gear's stiffness
-    where the data put it beyond the catalog's spread."""
+    """The named model's final form: the named errors' frames, then (vibration) the joint's
+    damper on its twist or structural damping in the steady state where BIC prefers it, and
+    unless the steady state is kept, the joint on the catalog curve (viscous, damped on the
+    load) where the twist leaves its first segment and it fits better; otherwise the TE's
+    overtones and modulation order, the viscosity law, the loop's Bouc–Wen form, a play
+    held by friction and its lost motion along the record, then a Preisach relay sum in
+    place of the Bouc–Wen loop, and a sum of friction elements in place of either, where
+    BIC prefers them; last, the gear's stiffness where the data put it beyond the catalog's
+    spread."""
     fit = refine_frames(problem, fit)
     steady = refine_damping(problem, fit)
-    if steady is fit:  # the viscous joint, on the catalog curve where the twist leaves K1
+    if steady is fit or problem.relative_damping:  # a viscous joint: on the catalog curve?
+        on_twist, problem.relative_damping = problem.relative_damping, False
         curved = refine_spring(problem, fit)
-        if curved is not fit:
+        if curved is not fit and curved.rss < steady.rss:
             return curved
+        problem.relative_damping = on_twist
     fit = refine_te_sidebands(problem, refine_te_overtones(problem, steady))
     fit = refine_hysteresis(problem, refine_viscosity(problem, refine_low_load(
         problem, refine_te_order(problem, fit))))

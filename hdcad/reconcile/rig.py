@@ -289,11 +289,10 @@ def periodogram_peak(values: np.ndarray, angle: np.ndarray, bins: int,
     peak = float(freqs[inside][int(np.argmax(power[inside]))])
     if not fine:
         return peak
-    step = 1.0 / (4.0 * span)
-    fine = peak + np.linspace(-step, step, 33)
+    step = 1.0 / (4.0 * span)  # the padded grid's
+    near = peak + np.linspace(-step, step, 33)
     centres = (np.arange(bins) + 0.5) * span / bins
-    fine_power = np.abs(np.exp(-2j * np.pi * np.outer(fine, centres)) @ summed) ** 2
-    return float(fine[int(np.argmax(fine_power))])
+    return float(near[int(np.argmax(_dft_power(summed, centres, near)))])
 
 
 # A ripple is a line in the periodogram: its power at least LINE_RATIO times the median over

@@ -42,7 +42,7 @@ from .fitting import Fit, Problem, fit_model, rss_at
 from .gates import (BIC_MIN, GATE_NOTE, SECOND_TRY_EXPLAINED_MIN, Candidate, Gate, bic_gain,
                     effective_n, gate, has_evidence, round_noise)
 from .loops import THROUGH_GEAR, preisach_forms, series_plays, series_slip, use_preisach
-from .noise import noise_rms
+from .te_forms import TE_OVERTONES
 
 __all__ = ["BIC_MIN", "GATE_NOTE", "Candidate", "Gate", "gate", "round_noise", "select_gear",
            "select_rig", "recheck_rig"]
@@ -81,6 +81,8 @@ def select_rig(problem: Problem, start: Fit, known: dict[str, Fit] | None = None
                     problem.base.inputs["record_position"][problem.rows])
             if name == "drive_ripple":
                 problem.drive_order = drive.best_order(problem, current.residual(problem))
+                if not problem.drive_order:  # the run-up crosses no order's resonance
+                    continue
             if name == "encoder_interpolation":
                 problem.scales["angle_period"] = rig.angle_period(
                     current.residual(problem),
@@ -142,8 +144,7 @@ def _rig_signature(problem: Problem, name: str, without: Fit, fit: Fit) -> bool:
         return rig.apart_at_the_tips(without.residual(problem), inputs["torque_Nm"][rows],
                                      inputs["branch_direction"][rows])
     if name == "drive_ripple":
-        after = fit.residual(problem)
-        return drive.coherent_at_crossing(without.residual(problem), after, noise_rms(after))
+        return drive.coherent_at_crossing(problem, without, fit)
     if name != "encoder_interpolation":
         return True
     angle = inputs["measured_rad"][rows]
@@ -384,12 +385,15 @@ def _spring_of_its_own(problem: Problem, best: Candidate | None, passing: list[C
 
 
 def recheck_rig(problem: Problem, final: Fit) -> Fit:
-    """Drop measurement effects that the gear effects made unnecessary."""
+    """Drop measurement effects that the gear effects made unnecessary, and a drive's
+    ripple at an overtone order of a gear error named beside it (the error's overtones are
+    chosen once it is named: :func:`.te_forms.refine_te_overtones`)."""
     current = final
     for name in [e for e in final.effects if e in rig.RIG_EFFECTS]:
         reduced = tuple(e for e in current.effects if e != name)
         fit = fit_model(problem, reduced, current.theta)
         sigma, tau = round_noise(problem, [current])
-        if not gate(problem, fit, current, sigma, tau).passes():
+        if (not gate(problem, fit, current, sigma, tau).passes()
+                or drive.at_a_named_overtone(problem, current.effects, TE_OVERTONES)):
             current = fit
     return current
