@@ -73,21 +73,20 @@ def test_white_noise_leaves_no_ripple(seed):
     assert _orders(_reconciled(0.0, seed=seed)) == []
 
 
-def test_the_ball_pass_ripple_of_suite_h_is_found_at_its_order():
+# suite H's transmission cases with a ball-pass ripple at the sample's seed (1 per cell)
+BALL_PASS = ("h-transmission-single-te_2x-ballpass-001",
+             "h-transmission-pair-te_1x-te_2x-eccentric+ballpass-001")
+
+
+@pytest.mark.parametrize("name", BALL_PASS)
+def test_the_ball_pass_ripple_of_suite_h_is_found_at_its_order(name):
     """Suite H's elliptic WG with a ball-pass ripple (order 5–12.4): the residual's ripple
     at the order the suite drew, within 0.02 (the records span 4–8 WG revolutions)."""
-    path = next(p for p in SUITES if p.stem == "truth_h")
-    cases, results = suite_runs(path)
-    found = 0
-    for case, result in zip(cases, results):
-        drawn = re.search(r"ball-pass ripple \(order ([\d.]+)", case.formulation)
-        if case.kind != "transmission" or not drawn:
-            continue
-        orders = [float(m.group(1)) for u in result["unexplained"]
-                  if (m := re.match(r"residual at ([\d.]+) cycles per WG", u))]
-        assert orders and orders[0] == pytest.approx(float(drawn.group(1)), abs=0.02)
-        found += 1
-    assert found == 2
+    case, result = case_run("h", name)
+    drawn = re.search(r"ball-pass ripple \(order ([\d.]+)", case.formulation)
+    orders = [float(m.group(1)) for u in result["unexplained"]
+              if (m := re.match(r"residual at ([\d.]+) cycles per WG", u))]
+    assert orders and orders[0] == pytest.approx(float(drawn.group(1)), abs=0.02)
 
 
 def test_no_ripple_is_reported_on_clean_transmission_data():

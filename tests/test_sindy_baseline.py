@@ -9,15 +9,14 @@ import pytest
 
 pytest.importorskip("pysindy")
 
-from truth_runs import suite_path, suite_runs  # noqa: E402 (puts benchmarks/ on the path)
+from truth_runs import suite_cases, suite_path  # noqa: E402 (puts benchmarks/ on the path)
 from sindy_baseline import sindy_case  # noqa: E402
 
 
 @pytest.fixture(scope="module")
 def cases():
-    # the session's shared sample (seed 11, 1 per cell): generating suite B takes 12 s, and
-    # the workers share it with its reconciled results
-    return suite_runs(suite_path("b"))[0]
+    # suite B's cases at the shared sample's seed (11, 1 per cell; generating them takes 12 s)
+    return suite_cases(suite_path("b"))
 
 
 def test_strong_transmission_error_is_named(cases):

@@ -1,7 +1,14 @@
 """The truth suites' sample (``truths/truth_*.py``, 1 case per cell, seed 11) reconciled once
 per test session and shared by the tests that read it (``bench_truth_suites`` runs and
 scores the same cases). Under ``pytest -n`` the workers share it through a file per suite
-(the first to need a suite reconciles it while the others wait for the file)."""
+(the first to need a suite reconciles it while the others wait for the file).
+
+The sample is every case of the held-out suite (``HELD_OUT``, the latest written) and, of
+the development suites before it, the cases on which nothing of the gear may be named
+(``DEVELOPMENT_CATEGORIES``: clean data and separable decoys, the false-alarm bar the
+library meets on every suite). The development suites' singles, pairs and data-equivalent
+decoys are scored by ``benchmarks/bench_truth_suites.py`` (4 per cell); a test that reads
+one of them reconciles that case alone (:func:`case_run`)."""
 
 from __future__ import annotations
 
@@ -21,6 +28,8 @@ import bench_truth_suites as bench  # noqa: E402
 
 SUITES = sorted((ROOT / "truths").glob("truth_*.py"))
 SEED, PER_CELL = 11, 1
+HELD_OUT = "truth_o"
+DEVELOPMENT_CATEGORIES = ("clean", "decoy_separable")
 
 
 @functools.lru_cache(maxsize=None)
@@ -65,8 +74,16 @@ def shared_folder(run: str) -> Path:
     return Path(tempfile.gettempdir()) / f"hdcad-truth-sample-{run}"
 
 
-def _reconcile_suite(path: Path) -> tuple[list, list[dict]]:
+def sampled(path: Path) -> list:
+    """The cases of the suite at ``path`` in the shared sample (the module docstring)."""
     cases = suite_cases(path)
+    if path.stem == HELD_OUT:
+        return cases
+    return [c for c in cases if c.category in DEVELOPMENT_CATEGORIES]
+
+
+def _reconcile_suite(path: Path) -> tuple[list, list[dict]]:
+    cases = sampled(path)
     jobs = list(enumerate(cases))
     with ProcessPoolExecutor(2) as pool:
         results = dict(pool.map(bench._run, jobs, chunksize=4))
@@ -74,7 +91,17 @@ def _reconcile_suite(path: Path) -> tuple[list, list[dict]]:
 
 
 def case_run(suite: str, name: str) -> tuple[object, dict]:
-    """(case, result) of the case called ``name`` in suite ``suite`` (b, c, d, e)."""
-    cases, results = suite_runs(suite_path(suite))
-    index = next(i for i, c in enumerate(cases) if c.name == name)
-    return cases[index], results[index]
+    """(case, result) of the case called ``name`` in suite ``suite`` (b … o) at the sample's
+    seed: from the shared sample when it holds the case, else reconciled alone."""
+    path = suite_path(suite)
+    if any(c.name == name for c in sampled(path)):
+        cases, results = suite_runs(path)
+        index = next(i for i, c in enumerate(cases) if c.name == name)
+        return cases[index], results[index]
+    return _case_alone(suite, name)
+
+
+@functools.lru_cache(maxsize=None)
+def _case_alone(suite: str, name: str) -> tuple[object, dict]:
+    case = next(c for c in suite_cases(suite_path(suite)) if c.name == name)
+    return case, bench._run((0, case))[1]

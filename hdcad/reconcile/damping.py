@@ -24,11 +24,11 @@ from .gates import EXPLAINED_MIN, beyond
 def refine_damping(problem: Problem, fit: Fit) -> Fit:
     """Vibration: the joint's damping in the form that fits the data, kept when it lowers
     the BIC by more than ``BIC_MIN`` over the viscous damper on the load's motion (the same
-    parameters) and explains ``EXPLAINED_MIN`` noise variances more (:func:`.gates.beyond`:
-    at thousands of rows a sliver of a viscous joint's misfit passes the BIC alone):
+    parameters) and, for structural damping, explains ``EXPLAINED_MIN`` noise variances more
+    (:func:`.gates.beyond`; ``FORM_EXPLAINED_MIN``):
 
     - the damper on the joint's twist θ − e, the gear's own damping, which the error drives
-      through it as well as through the spring (:func:`.joint.relative_damping_response`);
+      through it as well as through the spring (:func:`.joint.joint_response` on the twist);
     - the steady state through a spring with structural damping (:func:`.joint.steady_response`,
       loss factor η = 2ζ): a material's loss factor hardly changes with frequency, so it
       damps the resonance as a viscous ζ = η/2 does but the response off it differently,
@@ -42,11 +42,13 @@ def refine_damping(problem: Problem, fit: Fit) -> Fit:
     for form in JOINT_FORMS:
         _set_joint(problem, form)
         trials[form] = fit_model(problem, fit.effects, fit.theta)
-    form = min(trials, key=lambda f: trials[f].rss)
-    best = trials[form]
-    if not beyond(problem, fit, best, explained_min=EXPLAINED_MIN):
+    kept = [f for f in sorted(trials, key=lambda f: trials[f].rss)
+            if beyond(problem, fit, trials[f], explained_min=FORM_EXPLAINED_MIN[f])]
+    if not kept:
         _set_joint(problem, None)
         return fit
+    form = kept[0]
+    best = trials[form]
     _set_joint(problem, form)
     ratio = math.sqrt(best.rss / fit.rss)
     problem.notes.append(
@@ -63,6 +65,12 @@ def refine_damping(problem: Problem, fit: Fit) -> Fit:
 
 # the joint's damping forms tried once the excitation is named (refine_damping)
 JOINT_FORMS = ("relative", "structural")
+# the noise variances a form must explain beyond the BIC: the twist's damper is the load's
+# with the same parameter put where the gear's damping acts, so the likelihood alone picks
+# between them (a run-up read with the load's damper carries ζ 1–6 % high when the gear
+# damps the twist); structural damping changes the response's kind (no free vibration), and
+# at thousands of rows a sliver of a viscous joint's misfit passes the BIC alone
+FORM_EXPLAINED_MIN = {"relative": 0.0, "structural": EXPLAINED_MIN}
 
 
 def _set_joint(problem: Problem, form: str | None) -> None:
