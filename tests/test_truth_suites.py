@@ -38,7 +38,7 @@ def scored(request):
 @pytest.fixture(scope="module")
 def held_out():
     """Every case of the held-out suite."""
-    return scores(suite_path(HELD_OUT.removeprefix("truth_")))
+    return scores(suite_path(HELD_OUT))
 
 
 def share(rows, key):

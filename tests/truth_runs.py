@@ -28,7 +28,7 @@ import bench_truth_suites as bench  # noqa: E402
 
 SUITES = sorted((ROOT / "truths").glob("truth_*.py"))
 SEED, PER_CELL = 11, 1
-HELD_OUT = "truth_o"
+HELD_OUT = "o"
 DEVELOPMENT_CATEGORIES = ("clean", "decoy_separable")
 
 
@@ -77,7 +77,7 @@ def shared_folder(run: str) -> Path:
 def sampled(path: Path) -> list:
     """The cases of the suite at ``path`` in the shared sample (the module docstring)."""
     cases = suite_cases(path)
-    if path.stem == HELD_OUT:
+    if path == suite_path(HELD_OUT):
         return cases
     return [c for c in cases if c.category in DEVELOPMENT_CATEGORIES]
 
@@ -104,4 +104,4 @@ def case_run(suite: str, name: str) -> tuple[object, dict]:
 @functools.lru_cache(maxsize=None)
 def _case_alone(suite: str, name: str) -> tuple[object, dict]:
     case = next(c for c in suite_cases(suite_path(suite)) if c.name == name)
-    return case, bench._run((0, case))[1]
+    return case, bench.reconcile_case(case)

@@ -157,13 +157,10 @@ def _output_ripple(problem: Problem, without: Fit, fit: Fit, angle: np.ndarray) 
     """An output encoder's ripple in transmission: away from the wave generator's orders
     (there it is as much the gear's error) and a line in the periodogram over the output
     angle, which runs one way over many of its periods (a drift with time is a continuum)."""
-    period = fit.theta[_PERIOD_KEY]
+    period = fit.theta[fx.key_of("encoder_interpolation", "period")]
     return (rig.off_the_gear_orders(period, problem.base.figures["ratio"][0],
                                     float(np.ptp(angle)))
             and rig.is_line(without.residual(problem), angle, period))
-
-
-_PERIOD_KEY = "encoder_interpolation.period"
 
 
 def _gear_orders(problem: Problem) -> tuple[tuple[float, ...], float, bool]:
