@@ -34,8 +34,17 @@ DEVELOPMENT_CATEGORIES = ("clean", "decoy_separable")
 
 @functools.lru_cache(maxsize=None)
 def suite_cases(path: Path, seed: int = SEED, per_cell: int = PER_CELL) -> list:
-    """The cases of the suite at ``path`` (generating one takes up to half a minute)."""
-    return bench.load_suite(path).generate_cases(seed, bench.CATALOG_DIR, per_cell)
+    """The cases of the suite at ``path`` (generating a suite takes up to half a minute, so
+    the workers share them as they share the reconciled sample)."""
+    return _shared(path, f"{path.stem}-cases-{seed}-{per_cell}", lambda: suite_module(
+        path).generate_cases(seed, bench.CATALOG_DIR, per_cell))
+
+
+@functools.lru_cache(maxsize=None)
+def suite_module(path: Path):
+    """The suite's module, loaded once per process: its cases' classes must stay the ones
+    the cases were made with, for the workers to pickle them."""
+    return bench.load_suite(path)
 
 
 def suite_path(suite: str) -> Path:
@@ -50,22 +59,28 @@ def named_case(suite: str, name: str, seed: int, per_cell: int = 2):
 @functools.lru_cache(maxsize=None)
 def suite_runs(path: Path) -> tuple[list, list[dict]]:
     """(cases, reconcile results) of the suite at ``path``, in the suite's order."""
+    return _shared(path, path.stem, lambda: _reconcile_suite(path))
+
+
+def _shared(path: Path, stem: str, compute):
+    """``compute()``, shared by the workers of a ``pytest -n`` run through the file
+    ``stem``.pickle: the first to need it computes it while the others wait for the file.
+    ``path`` is the suite whose module defines the cases' classes."""
     run = os.environ.get("PYTEST_XDIST_TESTRUNUID")
     if not run:
-        return _reconcile_suite(path)
+        return compute()
     folder = shared_folder(run)
     folder.mkdir(exist_ok=True)
-    stored = folder / f"{path.stem}.pickle"
-    with open(folder / f"{path.stem}.lock", "w") as lock:
-        fcntl.flock(lock, fcntl.LOCK_EX)  # held while one worker reconciles the suite
+    stored = folder / f"{stem}.pickle"
+    with open(folder / f"{stem}.lock", "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)  # held while one worker computes it
         if not stored.exists():
-            runs = _reconcile_suite(path)
+            value = compute()
             staged = stored.with_suffix(".partial")
-            staged.write_bytes(pickle.dumps(runs))
+            staged.write_bytes(pickle.dumps(value))
             staged.replace(stored)
-            return runs
-    if path.stem not in sys.modules:  # the cases' classes live in the suite's module
-        bench.load_suite(path)
+            return value
+    suite_module(path)  # the cases' classes live in the suite's module
     return pickle.loads(stored.read_bytes())
 
 
@@ -103,5 +118,6 @@ def case_run(suite: str, name: str) -> tuple[object, dict]:
 
 @functools.lru_cache(maxsize=None)
 def _case_alone(suite: str, name: str) -> tuple[object, dict]:
-    case = next(c for c in suite_cases(suite_path(suite)) if c.name == name)
-    return case, bench.reconcile_case(case)
+    path = suite_path(suite)
+    case = next(c for c in suite_cases(path) if c.name == name)
+    return _shared(path, f"{path.stem}-alone-{name}", lambda: (case, bench.reconcile_case(case)))

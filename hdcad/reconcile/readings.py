@@ -14,6 +14,7 @@ import math
 
 import numpy as np
 
+from . import tips
 from .baseline import STIFFNESS_SPREAD, catalog_twist
 from .fitting import Fit, Problem
 from .gates import BIC_MIN
@@ -129,16 +130,22 @@ def nuisances(problem: Problem, fit: Fit) -> list[dict]:
     return out
 
 
-def series_slip(tied: bool) -> list[dict]:
-    """The other reading of a hysteresis named as one slip element in series: friction in
-    parallel plus a housing spring of the loop's own slip compliance."""
+def series_slip(problem: Problem, final: Fit, tied: bool) -> list[dict]:
+    """The other reading of a hysteresis named as slip in series with the gear: friction
+    in parallel plus a housing spring of the loop's own slip compliance; with where the
+    final model's loop puts its turning points against the catalog curve (:mod:`.tips`)."""
     if not tied:
         return []
-    return [{"alternative": ["hysteresis", "housing_compliance"], "reading": "series_slip",
-             "text": "the loop is read as slip in series with the gear (Iwan, Preisach): "
-                     "friction in parallel with the gear plus a housing spring of the loop's "
-                     "own slip compliance (slip_compliance) reads the same; check the "
-                     "housing's stiffness before stiffening it"}]
+    out = {"alternative": ["hysteresis", "housing_compliance"], "reading": "series_slip",
+           "text": "the loop is read as slip in series with the gear (Iwan, Preisach): "
+                   "friction in parallel with the gear plus a housing spring of the loop's "
+                   "own slip compliance (slip_compliance) reads the same; check the "
+                   "housing's stiffness before stiffening it"}
+    scale = tips.tip_scale(problem, final)
+    if scale is not None:
+        out["stiffness_at_turning_points"] = {"value": 1.0 / scale, "unit": "-"}
+        out["text"] += "; " + tips.text(scale)
+    return [out]
 
 
 def loop_in_series(added: dict[str, float] | None) -> list[dict]:

@@ -207,7 +207,7 @@ def reconcile(kind: str, data: dict, model: GearModel, catalog: Catalog,
     nuisances = readings.nuisances(problem, final)
     given = (readings.equivalent(problem, final, named, nuisances)
              + readings.undecided(named, rivals, beside, sigma, base.unit)
-             + readings.series_slip(bool(best and best.series_slip))
+             + readings.series_slip(problem, final, bool(best and best.series_slip))
              + readings.loop_in_series(seconds.spring_beside_series_loop(problem, final))
              + readings.held_play(seconds.held_play_for_loop(problem, final))
              + readings.twin_set_aside(set_aside, named)

@@ -1,0 +1,68 @@
+"""A torsion loop's turning points against the catalog curve.
+
+The catalog gives the total twist of a gear loaded forward and reverse as twice the twist
+its curve gives for the torque plus the backlash (seed 000 p.020, the worked example of
+CSF-25-100-2A-GR: 負荷を正逆に加えたときの総ねじれ量は上記で求めた値の2倍にバックラッシ量をプラスした値).
+The curve passes through the loop's turning points, so the gear's compliance seen there is
+what the catalog's stiffness and its spread bound. A loop whose slip adds to the gear's
+twist (friction elements in series, one slip element) carries a compliance of its own and
+moves its turning points off the curve. Where such a loop is named alone, the report says
+where its turning points lie: beyond the spread, the gear with that loop twists more than
+the catalog allows, which a spring in series reads the same as. The naming does not use it:
+over the truth suites the loops that carry such a compliance are as often a writer's
+hysteresis alone as a loop beside a spring (``truths/README.md``, session 27).
+
+References
+----------
+Harmonic Drive Systems, engineering data "剛性について", figures 020-1 and 020-2 and the
+twist example (seed 000, p.020).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .baseline import COMPLIANCE_SCALE_BOUNDS
+from .fitting import Fit, Problem
+
+# rows within this share of the record's largest and smallest torque are its turning points
+TURNING_SHARE = 0.97
+
+
+def tip_scale(problem: Problem, fit: Fit) -> float | None:
+    """The gear's compliance scale seen at the loop's outermost turning points [-].
+
+    The fitted compliance scale s plus the loop's twist between the rows at the largest and
+    the smallest torque (mean over the rows within ``TURNING_SHARE`` of each) over the
+    catalog curve's twist between them: s for a loop about the curve, more for one whose
+    slip adds to the twist. None without a compliance scale, or without torque of both
+    signs (no turning points on both flanks)."""
+    labels = fit.labels
+    if ("baseline", "compliance_scale") not in labels:
+        return None
+    torque = np.asarray(problem.base.inputs["torque_Nm"])[problem.rows]
+    if not torque.max() > 0.0 > torque.min():
+        return None
+    upper, lower = torque >= TURNING_SHARE * torque.max(), torque <= TURNING_SHARE * torque.min()
+    i = labels.index(("baseline", "compliance_scale"))
+    loop = [k for k, (effect, _) in enumerate(labels) if effect == "hysteresis"]
+    twist = fit.columns[:, loop] @ fit.beta[loop]
+    curve = fit.columns[upper, i].mean() - fit.columns[lower, i].mean()
+    return float(fit.beta[i] + (twist[upper].mean() - twist[lower].mean()) / curve)
+
+
+def text(scale: float) -> str:
+    """What the turning points of a loop in series at compliance scale ``scale`` say,
+    against the catalog curve and its spread."""
+    softer = 1.0 - 1.0 / scale
+    where = (f"{softer:.1%} softer than the catalog curve" if softer >= 0.0005 else
+             f"{-softer:.1%} stiffer than the catalog curve" if softer <= -0.0005 else
+             "on the catalog curve")
+    if scale > COMPLIANCE_SCALE_BOUNDS[1]:
+        return (f"the loop in series puts its turning points {where}, which passes through "
+                "them (the total twist forward and reverse is twice the curve's plus the "
+                "backlash, seed 000 p.020): beyond the stiffness's assumed spread, so the "
+                "gear with this loop twists more than the catalog allows; a spring in "
+                "series (housing, shafts) of the loop's own compliance reads the same")
+    return (f"the loop in series puts its turning points {where}, which passes through them "
+            "(seed 000 p.020): within the stiffness's assumed spread")
