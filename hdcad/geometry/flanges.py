@@ -74,6 +74,13 @@ def _missing(row: dict, columns: tuple[str, ...]) -> list[str]:
     return [c for c in columns if row.get(c) is None]
 
 
+def whole_mm(need_mm: float) -> float:
+    """A plate's least thickness rounded up to a whole millimetre: plates are ordered and
+    drawn in whole millimetres, and a computed least value (a drill point's 1.26 mm) would
+    print as 18.6618 on the drawing."""
+    return float(math.ceil(need_mm - 1e-9))
+
+
 # ---------------------------------------------------------------------------------------------
 # FD-0 drive flange
 # ---------------------------------------------------------------------------------------------
@@ -284,14 +291,12 @@ class GHMotorFlange:
             self.outer = max(self.outer, self.face.row["outline_mm"])
         self.bore = row["coupling_bore_max_mm"] + 2 * BORE_CLEARANCE_MM
         floor = drill_point(self.tap_drill) + MIN_FLOOR_MM   # under the drill's tip
-        self.thickness = max(self.options.wall_mm, self.pilot_depth + MIN_FLOOR_MM,
-                             self.drill_depth + floor)
+        need = max(self.pilot_depth + MIN_FLOOR_MM, self.drill_depth + floor)
         if self.face is not None:
             # under the counterbores, and between a gear-head recess and the motor side
             recess = 0.0 if self.face.spigot else self.face.row["pilot_depth_mm"]
-            self.thickness = max(self.thickness, self.face.least_thickness_mm(MIN_UNDER_HEAD_MM),
-                                 recess + max(self.pilot_depth + MIN_FLOOR_MM,
-                                              self.drill_depth + floor))
+            need = max(need, self.face.least_thickness_mm(MIN_UNDER_HEAD_MM), recess + need)
+        self.thickness = max(self.options.wall_mm, whole_mm(need))
         self.hole_for_fit = d  # thread major diameter: the ligament is measured from it
 
     def _check(self) -> None:
@@ -373,7 +378,8 @@ class GHMotorFlange:
             f"{BORE_CLEARANCE_MM:g} mm (coupling outside diameter is not in the seed)",
             *(self.face.notes() if self.face is not None else [NOT_FOR_MANUFACTURE]),
             f"thickness {self.thickness:g} mm = max(wall_mm, pilot depth + {MIN_FLOOR_MM:g}, "
-            f"drill depth + 118° point {drill_point(self.tap_drill):.1f} + {MIN_FLOOR_MM:g})",
+            f"drill depth + 118° point {drill_point(self.tap_drill):.1f} + {MIN_FLOOR_MM:g}), "
+            "rounded up to a whole millimetre",
         ]
         if row["pilot_depth_mm"] is None:
             notes.append(f"pilot depth not in table {row['table']} for {self.code}: design value "
