@@ -102,6 +102,9 @@ def test_gh_motor_flange_matches_table(series, size, code, tmp_path):
                                                              row["thread_depth_mm"])
     assert circle.diameter_mm == row["bolt_circle_mm"]
     assert_bolt_circle(cyls, circle)
+    # the plate is ordered and drawn in whole millimetres, under the drill's point and floor
+    t = part.dimensions["thickness_mm"]
+    assert t == int(t) and t >= part.dimensions["drill_depth_mm"] + 3.0
 
 
 def test_complete_codes_listed():

@@ -1,7 +1,8 @@
 """The truth suites' sample (``truths/truth_*.py``, 1 case per cell, seed 11) reconciled once
 per test session and shared by the tests that read it (``bench_truth_suites`` runs and
 scores the same cases). Under ``pytest -n`` the workers share it through a file per suite
-(the first to need a suite reconciles it while the others wait for the file).
+(the first to need a suite reconciles it while the others wait for the file), and so the
+suites' generated cases and the cases reconciled alone.
 
 The sample is every case of the held-out suite (``HELD_OUT``, the latest written) and, of
 the development suites before it, the cases on which nothing of the gear may be named
@@ -85,7 +86,8 @@ def _shared(path: Path, stem: str, compute):
 
 
 def shared_folder(run: str) -> Path:
-    """Where the workers of the test run ``run`` share the reconciled samples."""
+    """Where the workers of the test run ``run`` share the samples, the generated cases
+    and the cases reconciled alone."""
     return Path(tempfile.gettempdir()) / f"hdcad-truth-sample-{run}"
 
 
@@ -120,4 +122,4 @@ def case_run(suite: str, name: str) -> tuple[object, dict]:
 def _case_alone(suite: str, name: str) -> tuple[object, dict]:
     path = suite_path(suite)
     case = next(c for c in suite_cases(path) if c.name == name)
-    return _shared(path, f"{path.stem}-alone-{name}", lambda: (case, bench.reconcile_case(case)))
+    return case, _shared(path, f"{path.stem}-alone-{name}", lambda: bench.reconcile_case(case))

@@ -378,8 +378,8 @@ class GHMotorFlange:
             f"{BORE_CLEARANCE_MM:g} mm (coupling outside diameter is not in the seed)",
             *(self.face.notes() if self.face is not None else [NOT_FOR_MANUFACTURE]),
             f"thickness {self.thickness:g} mm = max(wall_mm, pilot depth + {MIN_FLOOR_MM:g}, "
-            f"drill depth + 118° point {drill_point(self.tap_drill):.1f} + {MIN_FLOOR_MM:g}), "
-            "rounded up to a whole millimetre",
+            f"drill depth + 118° point {drill_point(self.tap_drill):.1f} + {MIN_FLOOR_MM:g} "
+            "rounded up to a whole millimetre)",
         ]
         if row["pilot_depth_mm"] is None:
             notes.append(f"pilot depth not in table {row['table']} for {self.code}: design value "

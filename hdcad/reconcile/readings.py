@@ -141,7 +141,8 @@ def series_slip(problem: Problem, final: Fit, tied: bool) -> list[dict]:
                    "friction in parallel with the gear plus a housing spring of the loop's "
                    "own slip compliance (slip_compliance) reads the same; check the "
                    "housing's stiffness before stiffening it"}
-    scale = tips.tip_scale(problem, final)
+    # a spring named beside the loop as well would be left out of the figure: none then
+    scale = None if "housing_compliance" in final.effects else tips.tip_scale(problem, final)
     if scale is not None:
         out["stiffness_at_turning_points"] = {"value": 1.0 / scale, "unit": "-"}
         out["text"] += "; " + tips.text(scale)

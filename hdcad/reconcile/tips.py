@@ -27,6 +27,9 @@ from .fitting import Fit, Problem
 
 # rows within this share of the record's largest and smallest torque are its turning points
 TURNING_SHARE = 0.97
+# each flank's largest torque at least this share of the other's: a record loaded one way
+# (a dip below zero is no turning point) measures one flank only
+TWO_SIDED_SHARE = 0.5
 
 
 def tip_scale(problem: Problem, fit: Fit) -> float | None:
@@ -35,20 +38,25 @@ def tip_scale(problem: Problem, fit: Fit) -> float | None:
     The fitted compliance scale s plus the loop's twist between the rows at the largest and
     the smallest torque (mean over the rows within ``TURNING_SHARE`` of each) over the
     catalog curve's twist between them: s for a loop about the curve, more for one whose
-    slip adds to the twist. None without a compliance scale, or without torque of both
-    signs (no turning points on both flanks)."""
+    slip adds to the twist. None without a compliance scale, without turning points on both
+    flanks (each flank's largest torque ``TWO_SIDED_SHARE`` of the other's or more), or
+    where the curve or the scale there is not positive."""
     labels = fit.labels
     if ("baseline", "compliance_scale") not in labels:
         return None
     torque = np.asarray(problem.base.inputs["torque_Nm"])[problem.rows]
-    if not torque.max() > 0.0 > torque.min():
+    top, bottom = float(torque.max()), float(-torque.min())
+    if min(top, bottom) < TWO_SIDED_SHARE * max(top, bottom) or min(top, bottom) <= 0.0:
         return None
-    upper, lower = torque >= TURNING_SHARE * torque.max(), torque <= TURNING_SHARE * torque.min()
+    upper, lower = torque >= TURNING_SHARE * top, torque <= -TURNING_SHARE * bottom
     i = labels.index(("baseline", "compliance_scale"))
     loop = [k for k, (effect, _) in enumerate(labels) if effect == "hysteresis"]
     twist = fit.columns[:, loop] @ fit.beta[loop]
     curve = fit.columns[upper, i].mean() - fit.columns[lower, i].mean()
-    return float(fit.beta[i] + (twist[upper].mean() - twist[lower].mean()) / curve)
+    if not curve > 0.0:
+        return None
+    scale = float(fit.beta[i] + (twist[upper].mean() - twist[lower].mean()) / curve)
+    return scale if scale > 0.0 else None
 
 
 def text(scale: float) -> str:
@@ -58,11 +66,15 @@ def text(scale: float) -> str:
     where = (f"{softer:.1%} softer than the catalog curve" if softer >= 0.0005 else
              f"{-softer:.1%} stiffer than the catalog curve" if softer <= -0.0005 else
              "on the catalog curve")
-    if scale > COMPLIANCE_SCALE_BOUNDS[1]:
-        return (f"the loop in series puts its turning points {where}, which passes through "
-                "them (the total twist forward and reverse is twice the curve's plus the "
-                "backlash, seed 000 p.020): beyond the stiffness's assumed spread, so the "
-                "gear with this loop twists more than the catalog allows; a spring in "
-                "series (housing, shafts) of the loop's own compliance reads the same")
-    return (f"the loop in series puts its turning points {where}, which passes through them "
-            "(seed 000 p.020): within the stiffness's assumed spread")
+    lo, hi = COMPLIANCE_SCALE_BOUNDS
+    if lo <= scale <= hi:
+        return (f"the loop in series puts its turning points {where}, which should pass "
+                "through them (seed 000 p.020): within the stiffness's assumed spread")
+    said = (f"the loop in series puts its turning points {where}, which should pass through "
+            "them (the total twist forward and reverse is twice the curve's plus the "
+            "backlash, seed 000 p.020): beyond the stiffness's assumed spread, so the gear "
+            "with this loop twists ")
+    if scale > hi:
+        return said + ("more than the catalog allows; a spring in series (housing, shafts) "
+                       "of the loop's own compliance reads the same")
+    return said + "less than the catalog allows; check the twist sensor's gain"
