@@ -21,7 +21,7 @@ from ..design_options import DesignOptions
 from .drive_feature import drive_feature
 from .features import blind_hole, countersink, drill_point, lead_in, shaft_lead_in
 from .gh_interface import NOT_FOR_MANUFACTURE, gear_head_face
-from .housing_common import EDGE_MARGIN_MM, PILOT_LEAD_IN_MM, TAP_RUNOUT_PITCHES
+from .housing_common import EDGE_MARGIN_MM, PILOT_LEAD_IN_MM, TAP_RUNOUT_PITCHES, whole_mm
 from .iso286 import iso286_fit
 from .part import BoltCircle, Part
 from .primitives import EDGE_BREAK_MM, break_outer_edges, cylinder, ring_points, single_solid
@@ -72,13 +72,6 @@ def check_ring(label: str, ring_d: float, count: int, hole_d: float, inner_d: fl
 
 def _missing(row: dict, columns: tuple[str, ...]) -> list[str]:
     return [c for c in columns if row.get(c) is None]
-
-
-def whole_mm(need_mm: float) -> float:
-    """A plate's least thickness rounded up to a whole millimetre: plates are ordered and
-    drawn in whole millimetres, and a computed least value (a drill point's 1.26 mm) would
-    print as 18.6618 on the drawing."""
-    return float(math.ceil(need_mm - 1e-9))
 
 
 # ---------------------------------------------------------------------------------------------

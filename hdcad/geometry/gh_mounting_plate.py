@@ -30,7 +30,7 @@ import cadquery as cq
 from ..catalog import Catalog
 from .features import screw_body, screw_for_grip
 from .gh_interface import GearHeadFace
-from .housing_common import EDGE_FACTOR
+from .housing_common import EDGE_FACTOR, whole_mm
 from .iso286 import iso286_fit
 from .part import BoltCircle, GeometricTolerance, Neighbour, Part
 from .primitives import break_outer_edges, cylinder, ring_points, single_solid
@@ -55,8 +55,8 @@ class GHMountingPlate:
         self.thread = row["bolt_thread"]
         self.d = thread_diameter(self.thread)
         self.clearance = self.face.clearance_mm
-        self.thickness = math.ceil(max(self.face.least_thickness_mm(FLOOR_MM), 1.5 * self.d,
-                                       10.0))
+        self.thickness = whole_mm(max(self.face.least_thickness_mm(FLOOR_MM), 1.5 * self.d,
+                                      10.0))
         self.bore = row.get("bore_mm") or (
             row["pilot_diameter_mm"] - 2 * WALL_MM if self.face.spigot
             else row["pilot_diameter_mm"])

@@ -29,6 +29,13 @@ TAP_RUNOUT_PITCHES = 3.0   # blind tap drill deeper than the usable thread by 3�
 PILOT_LEAD_IN_MM = 1.0     # axial length of the 20° lead-in on pilots and spigots (HOUSING_RULES §4)
 
 
+def whole_mm(need_mm: float) -> float:
+    """A plate's least thickness rounded up to a whole millimetre [mm]: plates are ordered
+    and drawn in whole millimetres, and a computed least value (a drill point's 1.26 mm)
+    would print as 18.6618 on the drawing."""
+    return float(math.ceil(need_mm))
+
+
 def table_value(table: dict, key, what: str):
     if key not in table:
         raise ValueError(f"{what} {key!r} is not in hdcad.geometry.standards' table; "

@@ -25,7 +25,7 @@ from ..checks.bolts import MIN_ENGAGEMENT
 from ..design_options import DesignOptions
 from .features import (COUNTERSINK_FACTOR, LEAD_IN_DEG, OringGland, blind_hole, countersink,
                        drill_point, lead_in, screw_body, screw_for_grip, shaft_lead_in)
-from .housing_common import EDGE_FACTOR, PILOT_LEAD_IN_MM, TAP_RUNOUT_PITCHES
+from .housing_common import EDGE_FACTOR, PILOT_LEAD_IN_MM, TAP_RUNOUT_PITCHES, whole_mm
 from .iso286 import iso286_fit
 from .part import BoltCircle, Neighbour, Part
 from .primitives import break_outer_edges, cylinder, ring_points, single_solid
@@ -204,7 +204,7 @@ class MotorAdapter:
         need.append(head_seat + (self.recess if self.cbore_from_recess else 0.0))
         if self.motor_drill is not None:
             need.append(self.motor_drill + drill_point(self.motor_hole) + FLOOR_MM)
-        return math.ceil(max(need))
+        return whole_mm(max(need))
 
     @property
     def cbore_depth(self) -> float:

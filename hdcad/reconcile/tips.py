@@ -67,13 +67,12 @@ def text(scale: float) -> str:
              f"{-softer:.1%} stiffer than the catalog curve" if softer <= -0.0005 else
              "on the catalog curve")
     lo, hi = COMPLIANCE_SCALE_BOUNDS
-    if lo <= scale <= hi:
-        return (f"the loop in series puts its turning points {where}, which should pass "
-                "through them (seed 000 p.020): within the stiffness's assumed spread")
     said = (f"the loop in series puts its turning points {where}, which should pass through "
             "them (the total twist forward and reverse is twice the curve's plus the "
-            "backlash, seed 000 p.020): beyond the stiffness's assumed spread, so the gear "
-            "with this loop twists ")
+            "backlash, seed 000 p.020): ")
+    if lo <= scale <= hi:
+        return said + "within the stiffness's assumed spread"
+    said += "beyond the stiffness's assumed spread, so the gear with this loop twists "
     if scale > hi:
         return said + ("more than the catalog allows; a spring in series (housing, shafts) "
                        "of the loop's own compliance reads the same")
