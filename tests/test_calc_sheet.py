@@ -63,12 +63,8 @@ def _summary_lines(text):
     return [line for line in table.splitlines() if line.strip()]
 
 
-def test_sheet_names_the_model_and_every_check_with_its_status(gh_sheet):
-    code, folder, result = gh_sheet
-    assert code == 0  # the shipped example passes (README command 1)
-    reader, text = _text(folder)
-    assert "CSF-45-120-GH" in text and result["catalog_revision"] in text
-    lines = _summary_lines(text)
+def _assert_summary_rows(lines, result):
+    """Every check has its row, with its status, among the summary's ``lines``."""
     for check in result["checks"]:
         label = check_label(check["id"], check["details"], criterion=False)
         status = status_text(check["status"])
@@ -78,6 +74,14 @@ def test_sheet_names_the_model_and_every_check_with_its_status(gh_sheet):
         # a governing criterion is printed under the label, the status then follows it
         row = " ".join(lines[at[0]:at[0] + (3 if check["details"].get("governing") else 1)])
         assert status in row, (label, row)
+
+
+def test_sheet_names_the_model_and_every_check_with_its_status(gh_sheet):
+    code, folder, result = gh_sheet
+    assert code == 0  # the shipped example passes (README command 1)
+    reader, text = _text(folder)
+    assert "CSF-45-120-GH" in text and result["catalog_revision"] in text
+    _assert_summary_rows(_summary_lines(text), result)
 
 
 def test_every_page_has_the_header_and_a_page_number(gh_sheet):
@@ -164,3 +168,14 @@ def test_sheet_spells_speed_units_one_way(gh_sheet):
     _, folder, _ = gh_sheet
     _, text = _text(folder)
     assert "r/min" in text and not re.search(r"\brpm\b", text)
+
+
+def test_the_summary_keeps_its_last_rows_together_and_plots_follow_the_checks(gh_sheet):
+    """The shipped example's cover holds the whole check summary, and the plots begin on the
+    page of the last check's box (each once stood alone on a page of its own)."""
+    _, folder, result = gh_sheet
+    reader, _ = _text(folder)
+    pages = [_page_text(page) for page in reader.pages]
+    _assert_summary_rows(_summary_lines(pages[0] + "1 Inputs"), result)
+    plots = next(i for i, text in enumerate(pages) if "3 Plots" in text)
+    assert "review_assembly — Review assembly" in pages[plots]
