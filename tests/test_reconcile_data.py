@@ -84,6 +84,28 @@ def test_an_efficiency_grid_of_three_temperatures_speeds_and_four_loads_is_enoug
         validate_data("efficiency", {k: v[:29] for k, v in data.items()})
 
 
+def test_an_efficiency_read_a_little_outside_0_to_100_percent_is_kept():
+    """Output over input power reads below 0 % or above 100 % where the torques' errors are
+    large against the power: suite P's Richards low-load case at seed 11 has one glitch row
+    at −7.9 % among 468 (its noise 3.5 points) and was refused as a whole file. Such rows are
+    kept, as is suite K's torque reading that creeps above 100 % after each tare; a row
+    beyond −100…200 %, or a median at or below 0 %, is no efficiency."""
+    grid = np.array([(n, t, c) for c in (20.0, 40.0, 60.0) for n in (500.0, 1000.0, 2000.0)
+                     for t in (10.0, 30.0, 60.0, 100.0)])
+    data = {"input_speed_rpm": grid[:, 0], "load_torque_Nm": grid[:, 1],
+            "temperature_C": grid[:, 2], "efficiency_pct": np.full(len(grid), 75.0)}
+    data["efficiency_pct"][[0, 1]] = (-7.9, 101.5)
+    assert validate_data("efficiency", data)["efficiency_pct"][0] == -7.9
+    for bad in (-120.0, 250.0):
+        data["efficiency_pct"][0] = bad
+        with pytest.raises(InputError, match="must lie in -100…200 %") as err:
+            validate_data("efficiency", data)
+        assert err.value.field == "efficiency_pct"
+    data["efficiency_pct"] = np.full(len(grid), -5.0)
+    with pytest.raises(InputError, match="median must be > 0 %"):
+        validate_data("efficiency", data)
+
+
 def test_validate_data_checks_in_memory_columns():
     with pytest.raises(InputError, match="different lengths"):
         validate_data("torsion", {"torque_Nm": np.ones(200), "twist_rad": np.ones(199)})
