@@ -15,7 +15,7 @@ import math
 
 import numpy as np
 import pytest
-from truth_runs import case_run, suite_runs, suite_path
+from truth_runs import case_run, suite_cases, suite_path
 
 from hdcad.reconcile import drive, joint
 
@@ -36,17 +36,25 @@ def test_a_motor_s_cogging_is_the_rig_s(name):
     assert result["rmse_after"] <= 1.2 * noise
 
 
-def test_the_gear_s_own_errors_get_no_drive_ripple():
-    """Suite O's te_1x and te_2x singles and pairs in vibration (odd-harmonic waves among
-    them, whose 3× crosses the resonance too): named as the gear's, with no drive ripple
-    beside them (the ripple must beat every gear effect alone to be added)."""
-    cases, results = suite_runs(suite_path("o"))
-    gear = [(c, r) for c, r in zip(cases, results)
-            if c.kind == "vibration" and c.category in ("single", "pair")]
-    assert gear
-    for case, result in gear:
-        assert set(result["missing_effects"]) == set(case.gear_effects), case.name
-        assert "drive_ripple" not in [m["effect"] for m in result["measurement_effects"]]
+# the gear's own errors in vibration, singles and pairs, of suite O (odd-harmonic waves among
+# them) and suite P (rectified and sin·|sin| waves), at the sample's seed and size
+GEAR_ERRORS = [(s, c.name) for s in ("o", "p") for c in suite_cases(suite_path(s))
+               if c.kind == "vibration" and c.category in ("single", "pair")]
+
+
+def test_there_are_gear_errors_to_read():
+    assert len(GEAR_ERRORS) >= 8
+
+
+@pytest.mark.parametrize("suite,name", GEAR_ERRORS, ids=[n for _, n in GEAR_ERRORS])
+def test_the_gear_s_own_errors_get_no_drive_ripple(suite, name):
+    """Suites O's and P's te_1x and te_2x singles and pairs in vibration (odd- and
+    even-harmonic waves among them, whose overtones cross the resonance too): named as the
+    gear's, with no drive ripple beside them (the ripple must beat every gear effect alone to
+    be added, and one at an overtone order of a named error is that error's)."""
+    case, result = case_run(suite, name)
+    assert set(result["missing_effects"]) == set(case.gear_effects)
+    assert "drive_ripple" not in [m["effect"] for m in result["measurement_effects"]]
 
 
 def _run_up(order_rpm_top: float = 1800.0, seconds: float = 40.0, rate: float = 4000.0):
