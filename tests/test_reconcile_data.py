@@ -71,14 +71,19 @@ def test_min_rows_is_stated_per_kind_and_extra_columns_are_ignored(tmp_path):
     assert set(data) == set(COLUMNS["transmission"]) and len(data["input_angle_rad"]) == 600
 
 
+def _efficiency_grid() -> dict:
+    """3 temperatures × 3 speeds × 4 loads at 75 % efficiency: 36 rows."""
+    grid = np.array([(n, t, c) for c in (20.0, 40.0, 60.0) for n in (500.0, 1000.0, 2000.0)
+                     for t in (10.0, 30.0, 60.0, 100.0)])
+    return {"input_speed_rpm": grid[:, 0], "load_torque_Nm": grid[:, 1],
+            "temperature_C": grid[:, 2], "efficiency_pct": np.full(len(grid), 75.0)}
+
+
 def test_an_efficiency_grid_of_three_temperatures_speeds_and_four_loads_is_enough():
     """3 temperatures × 3 speeds × 4 loads = 36 rows, a common small test grid: accepted;
     below MIN_ROWS (30: 24 rows to fit on in each of the 5 folds, 3× the largest model's
     parameters) the error names the count."""
-    grid = np.array([(n, t, c) for c in (20.0, 40.0, 60.0) for n in (500.0, 1000.0, 2000.0)
-                     for t in (10.0, 30.0, 60.0, 100.0)])
-    data = {"input_speed_rpm": grid[:, 0], "load_torque_Nm": grid[:, 1],
-            "temperature_C": grid[:, 2], "efficiency_pct": np.full(len(grid), 75.0)}
+    data = _efficiency_grid()
     assert len(validate_data("efficiency", data)["efficiency_pct"]) == 36
     with pytest.raises(InputError, match="29 rows; efficiency needs at least 30"):
         validate_data("efficiency", {k: v[:29] for k, v in data.items()})
@@ -90,10 +95,7 @@ def test_an_efficiency_read_a_little_outside_0_to_100_percent_is_kept():
     at −7.9 % among 468 (its noise 3.5 points) and was refused as a whole file. Such rows are
     kept, as is suite K's torque reading that creeps above 100 % after each tare; a row
     beyond −100…200 %, or a median at or below 0 %, is no efficiency."""
-    grid = np.array([(n, t, c) for c in (20.0, 40.0, 60.0) for n in (500.0, 1000.0, 2000.0)
-                     for t in (10.0, 30.0, 60.0, 100.0)])
-    data = {"input_speed_rpm": grid[:, 0], "load_torque_Nm": grid[:, 1],
-            "temperature_C": grid[:, 2], "efficiency_pct": np.full(len(grid), 75.0)}
+    data = _efficiency_grid()
     data["efficiency_pct"][[0, 1]] = (-7.9, 101.5)
     assert validate_data("efficiency", data)["efficiency_pct"][0] == -7.9
     for bad in (-120.0, 250.0):
@@ -101,7 +103,7 @@ def test_an_efficiency_read_a_little_outside_0_to_100_percent_is_kept():
         with pytest.raises(InputError, match="must lie in -100…200 %") as err:
             validate_data("efficiency", data)
         assert err.value.field == "efficiency_pct"
-    data["efficiency_pct"] = np.full(len(grid), -5.0)
+    data["efficiency_pct"] = np.full(36, -5.0)
     with pytest.raises(InputError, match="median must be > 0 %"):
         validate_data("efficiency", data)
 

@@ -124,6 +124,17 @@ def _outliers(residual: np.ndarray) -> np.ndarray:
     return np.flatnonzero(np.abs(local) > OUTLIER_SIGMA * sigma)
 
 
+def _set_aside(problem: Problem, fit: Fit, where: str) -> np.ndarray:
+    """The gross outliers of ``fit``'s residual not yet left out, added to
+    ``problem.outliers`` (left out of the RMSE) with a note saying they were, ``where``."""
+    bad = np.setdiff1d(_outliers(problem.base.y - fit.prediction), problem.outliers)
+    if bad.size:
+        problem.outliers = np.union1d(problem.outliers, bad)
+        problem.notes.append(f"{bad.size} gross outlier(s) (> {OUTLIER_SIGMA:g}× the noise RMS "
+                             f"from their neighbours) {where}")
+    return bad
+
+
 def _without_outliers(problem: Problem, fit: Fit) -> Fit:
     """``fit`` again without the gross outliers of its residual not yet left out.
 
@@ -131,14 +142,11 @@ def _without_outliers(problem: Problem, fit: Fit) -> Fit:
     model before its final form: before its effects are in, the residual holds them (an
     efficiency grid run in random order reads as rough as noise to the neighbours) and hides
     an outlier in them."""
-    bad = np.setdiff1d(_outliers(problem.base.y - fit.prediction), problem.outliers)
+    which = "the named model's fit" if fit.effects else "the fit"
+    bad = _set_aside(problem, fit, f"left out of {which} and the RMSE")
     if not bad.size:
         return fit
-    problem.outliers = np.union1d(problem.outliers, bad)
     set_rows(problem, np.setdiff1d(problem.rows, bad))
-    which = "the named model's fit" if fit.effects else "the fit"
-    problem.notes.append(f"{bad.size} gross outlier(s) (> {OUTLIER_SIGMA:g}× the noise RMS from "
-                         f"their neighbours) left out of {which} and the RMSE")
     return fit_model(problem, fit.effects, fit.theta)
 
 
@@ -148,12 +156,8 @@ def _outliers_of_final(problem: Problem, final: Fit) -> None:
     suite P's outliers from the named model's residual. The final form is not fitted again
     without them: some of its forms are no columns to solve again (a joint on the catalog
     curve, integrated), and a few rows among thousands barely move it."""
-    bad = np.setdiff1d(_outliers(problem.base.y - final.prediction), problem.outliers)
-    if bad.size:
-        problem.outliers = np.union1d(problem.outliers, bad)
-        problem.notes.append(f"{bad.size} gross outlier(s) (> {OUTLIER_SIGMA:g}× the noise RMS "
-                             "from their neighbours) in the final model's residual left out of "
-                             "the RMSE (the final form was fitted with them)")
+    _set_aside(problem, final, "in the final model's residual left out of the RMSE (the "
+                               "final form was fitted with them)")
 
 
 def _start(problem: Problem) -> Fit:
