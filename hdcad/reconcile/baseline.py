@@ -30,7 +30,7 @@ from ..checks.stiffness import StiffnessCurve
 from ..errors import InputError
 from ..models import GearModel
 from .effects import Parameter
-from .rig import TORQUE_GAIN_KEY, TORQUE_OFFSET_KEY
+from .rig import TORQUE_GAIN_KEY, TORQUE_OFFSET_KEY, block_position
 
 # FD ratings depend on speed; the rated torque used for α = T/Tr is the 1450 r/min row
 # (table 310-1), the speed hdcad's catalog listing shows for FD models.
@@ -379,6 +379,9 @@ def build(kind: str, data: dict, model: GearModel, catalog: Catalog,
         base = {"torsion": torsion, "transmission": transmission,
                 "efficiency": efficiency}[kind](data, model, catalog)
     base.inputs["record_position"] = np.linspace(-1.0, 1.0, len(base.y))
+    blocks = block_position(np.asarray(data["temperature_C"])) if kind == "efficiency" else None
+    if blocks is not None:  # oven blocks: a drift may restart at each
+        base.inputs["block_position"] = blocks
     return base
 
 

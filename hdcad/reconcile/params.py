@@ -47,6 +47,8 @@ def rig_params(problem: Problem, fit: Fit, effect: str) -> dict[str, dict]:
         out["at_record_position"] = {"value": problem.step_position, "unit": "-"}
     if effect == "thermal_drift":
         out["tau"] = {"value": fit.theta["thermal_drift.tau"], "unit": "half-records"}
+    if effect == "block_drift":
+        out["tau"] = {"value": fit.theta["block_drift.tau"], "unit": "median block lengths"}
     if effect == "encoder_interpolation":
         out["period"] = {"value": fit.theta["encoder_interpolation.period"], "unit": unit}
         out["amplitude"] = {"value": math.hypot(b["a1"], b["b1"]), "unit": unit}
@@ -85,11 +87,27 @@ def rig_entry(problem: Problem, fit: Fit, effect: str) -> dict:
             f"resonance at {params['resonance_speed']['value']:.4g} r/min: the drive's "
             "torque ripple (a motor's cogging or electrical ripple), or a harmonic of the "
             "gear's own error the catalog does not name; check the motor and coupling")
+    if effect == "block_drift":
+        entry["reading"] = _block_drift_reading(problem, params)
     if "T_off" in params:
         entry["reading"] = (f"the torque channel's zero is off by {params['T_off']['value']:.4g} "
                             "N·m (an untared bridge, a tare taken under load): the gear "
                             "carries the recorded torque less that")
     return entry
+
+
+def _block_drift_reading(problem: Problem, params: dict[str, dict]) -> str:
+    """What a per-block drift says: how far it goes within a block, in how many blocks."""
+    v = problem.base.inputs["block_position"]
+    grid = np.linspace(0.0, float(v.max()), 201)
+    d1, d2, tau = (params[k]["value"] for k in ("d1", "d2", "tau"))
+    drift = d1 * grid + d2 * -np.expm1(-grid / tau)
+    peak = float(drift[np.argmax(np.abs(drift))])
+    unit = "%-points" if problem.base.unit == "%" else problem.base.unit
+    return (f"the reading drifts by up to {peak:+.3g} {unit} within each of the "
+            f"{int(np.count_nonzero(v == 0.0))} temperature blocks and starts again at each "
+            "(a channel re-zeroed as each block starts, then warming or creeping): let the "
+            "rig settle, or zero it, before each block's first point")
 
 
 def _te(b: dict[str, float], th: dict[str, float]) -> dict[str, tuple[float, str]]:
@@ -345,8 +363,10 @@ def output_gain_entry(problem: Problem, fit: Fit, sigma: float, tau: float) -> l
     if steady > STEADY_SPEED_CORRELATION:
         text += ("; at this test's steady speed a drift of the output angle with test time "
                  "reads the same")
+    reads_as = ["encoder_eccentricity"] * int(alike) + ["thermal_drift"] * int(
+        steady > STEADY_SPEED_CORRELATION)
     return [{"effect": "sensor_gain", "params": {"g": {"value": g, "unit": "-"}},
-             "reading": text}]
+             "reading": text, **({"reads_as": reads_as} if reads_as else {})}]
 
 
 def twist_zero_entry(problem: Problem, fit: Fit, sigma: float, tau: float) -> list[dict]:
@@ -373,10 +393,10 @@ def twist_zero_entry(problem: Problem, fit: Fit, sigma: float, tau: float) -> li
                         "at all (a tare taken under a preload, an encoder not homed)"}]
 
 
-def _significant(problem: Problem, columns: np.ndarray, i: int, sigma: float, tau: float
-                 ) -> bool:
-    """Whether column ``i`` of the design ``columns`` earns its place: leaving it out raises
-    the BIC by more than ``BIC_MIN`` and the residual by ``EXPLAINED_MIN`` noise
+def _significant(problem: Problem, columns: np.ndarray, i: int | list[int], sigma: float,
+                 tau: float) -> bool:
+    """Whether column(s) ``i`` of the design ``columns`` earn their place: leaving them out
+    raises the BIC by more than ``BIC_MIN`` and the residual by ``EXPLAINED_MIN`` noise
     variances."""
     def rss(a: np.ndarray) -> float:
         beta = np.linalg.lstsq(a, problem.y, rcond=None)[0]
@@ -385,7 +405,7 @@ def _significant(problem: Problem, columns: np.ndarray, i: int, sigma: float, ta
     n = len(problem.rows)
     n_eff = max(n / tau, 2.0)
     full, without = rss(columns), rss(np.delete(columns, i, axis=1))
-    delta_bic = rss_bic_gain(without, full, 1, n_eff)
+    delta_bic = rss_bic_gain(without, full, int(np.size(i)), n_eff)
     explained = (without - full) / n / sigma ** 2 if sigma > 0 else math.inf
     return delta_bic > BIC_MIN and explained > EXPLAINED_MIN
 

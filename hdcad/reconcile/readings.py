@@ -91,7 +91,9 @@ def nuisances(problem: Problem, fit: Fit) -> list[dict]:
     out = []
     s = free_scale(problem, fit)
     if s is not None and s > 0:
-        out.append(_scale_entry("stiffness_scale", 1.0 / s, "stiffness"))
+        entry = _scale_entry("stiffness_scale", 1.0 / s, "stiffness")
+        out.append({**entry, "reads_as": ["sensor_gain"],  # every segment scaled alike
+                    "text": entry["text"] + "; a twist sensor's gain reads the same"})
         printed = _beta(fit, "printed_reading")
         if printed is not None:
             share = printed / _beta(fit, "compliance_scale")
@@ -118,7 +120,8 @@ def nuisances(problem: Problem, fit: Fit) -> list[dict]:
     if eta is not None:
         out.append({"name": "efficiency_level", "value": eta, "unit": "%",
                     "text": f"efficiency level η0 = {eta:.3g} % (the catalog's curves are "
-                            "lost: the level is not compared)"})
+                            "lost: the level is not compared); a torque or speed channel's "
+                            "gain reads the same", "reads_as": ["sensor_gain"]})
     slope = _beta(fit, "eta_speed")
     if slope is not None:
         per_doubling = slope * np.log(2.0)

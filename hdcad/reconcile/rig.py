@@ -37,6 +37,17 @@ TORQUE_GAIN_LIMIT = 0.3
 # or a tare taken under a load.
 TORQUE_OFFSET_LIMIT = 0.1
 
+# Time constant of a drift that restarts at each test block [block lengths]: from a twentieth
+# of the block (a sensor that settles within a few rows) to three blocks (a creep that stays
+# nearly straight over the block).
+BLOCK_TAU = (0.05, 3.0)
+
+# Blocks a per-block drift is looked for in: runs of one temperature set-point in row order
+# (an oven block), at least BLOCKS_MIN of them with BLOCK_ROWS_MIN rows or more each (fewer
+# rows do not show a shape that restarts).
+BLOCKS_MIN = 2
+BLOCK_ROWS_MIN = 8
+
 # Harmonics of an encoder's interpolation error: read at the measured angle y = θ + e(θ),
 # the error is still periodic in y, its k-th harmonic (2π·e/p)^(k−1) of the first.
 INTERPOLATION_HARMONICS = 3
@@ -60,6 +71,19 @@ RIG_EFFECTS: dict[str, Effect] = {e.name: e for e in (
                     Parameter("tau", "-", "warm-up time constant in half-records",
                               WARM_UP_TAU[0], WARM_UP_TAU[1], "1")),
         kinds=("torsion", "transmission", "efficiency", "vibration")),
+    Effect(
+        name="block_drift",
+        description=("A drift that restarts at each test block (the torque or speed channel "
+                     "re-zeroed as each oven block starts, then warming or creeping as the "
+                     "block runs): the same shape in every block, in row order within the "
+                     "block, unrelated to the load, speed or temperature of the rows."),
+        form=("y += d1·v + d2·(1 − exp(−v/τ)), v = rows since the block's first row over "
+              "the median block's rows, blocks = runs of one temperature in row order"),
+        parameters=(_linear("d1", "%", "linear drift over a median block"),
+                    _linear("d2", "%", "settling part of the drift"),
+                    Parameter("tau", "-", "settling time constant in median block lengths",
+                              BLOCK_TAU[0], BLOCK_TAU[1], "1")),
+        kinds=("efficiency",)),
     Effect(
         name="angle_offset",
         description=("The angle's zero moves once during the test (re-zeroed or slipped "
@@ -140,10 +164,13 @@ RIG_NAMES = tuple(RIG_EFFECTS)
 IN_BASELINE = {("sensor_gain", "transmission")}
 
 
-def applicable(kind: str) -> tuple[str, ...]:
-    """The measurement effects searched for in ``kind``."""
+def applicable(kind: str, inputs: dict[str, np.ndarray] | None = None) -> tuple[str, ...]:
+    """The measurement effects searched for in ``kind`` (a per-block drift only where the
+    ``inputs`` have blocks)."""
+    blocks = inputs is not None and inputs.get("block_position") is not None
     return tuple(n for n, e in RIG_EFFECTS.items()
-                 if kind in e.kinds and (n, kind) not in IN_BASELINE)
+                 if kind in e.kinds and (n, kind) not in IN_BASELINE
+                 and (n != "block_drift" or blocks))
 
 
 # What a measurement effect fits in a kind, where that differs by kind: a sensor's gain is
@@ -175,6 +202,9 @@ def columns(name: str, kind: str, inputs: dict[str, np.ndarray], step_position: 
         return [], np.zeros((len(u), 0))
     if name == "thermal_drift":
         return ["d1", "d2"], np.column_stack([u, warm_up(u, theta["tau"])])
+    if name == "block_drift":
+        v = inputs["block_position"]
+        return ["d1", "d2"], np.column_stack([v, -np.expm1(-v / theta["tau"])])
     if name == "angle_offset":
         return ["step"], (u >= step_position).astype(float)
     if name == "encoder_eccentricity":
@@ -347,6 +377,34 @@ def off_the_gear_orders(period_rad: float, ratio: float, span_rad: float) -> boo
     (:func:`gear_orders`): one on a WG order is as much the gear's error as the encoder's."""
     orders, width = gear_orders(ratio, span_rad)
     return all(abs(1.0 / period_rad - f) > width for f in orders)
+
+
+def block_position(setting: np.ndarray) -> np.ndarray | None:
+    """Each row's position within its block: rows since the block's first row over the
+    median block's rows (a rig's warm-up runs in time, and each row takes about as long),
+    where blocks are runs of one ``setting`` (a temperature set-point) in row order; None
+    when fewer than ``BLOCKS_MIN`` blocks of ``BLOCK_ROWS_MIN`` rows or more."""
+    starts = np.concatenate([[0], np.flatnonzero(np.diff(setting) != 0) + 1])
+    lengths = np.diff(np.append(starts, len(setting)))
+    if np.count_nonzero(lengths >= BLOCK_ROWS_MIN) < BLOCKS_MIN:
+        return None
+    first = np.repeat(starts, lengths)
+    return (np.arange(len(setting)) - first) / float(np.median(lengths))
+
+
+def same_in_blocks(residual: np.ndarray, drift: np.ndarray, position: np.ndarray) -> bool:
+    """A drift that restarts at each block has its shape in most blocks, not in one or two:
+    within each block long enough to show it, the fitted ``drift`` and the ``residual`` it
+    takes, each less its block mean, go the same way (positive product) in at least
+    ``SAME_SIGN_SHARE`` of the blocks."""
+    starts = np.flatnonzero(position == 0.0)
+    ends = np.append(starts[1:], len(position))
+    alike = [np.dot(drift[a:b] - drift[a:b].mean(), residual[a:b] - residual[a:b].mean()) > 0
+             for a, b in zip(starts, ends) if b - a >= BLOCK_ROWS_MIN]
+    return bool(alike) and float(np.mean(alike)) >= SAME_SIGN_SHARE
+
+
+SAME_SIGN_SHARE = 2.0 / 3.0
 
 
 def _bins(angle: np.ndarray, span: float, count: int) -> np.ndarray:

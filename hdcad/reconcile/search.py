@@ -70,7 +70,7 @@ def select_rig(problem: Problem, start: Fit, known: dict[str, Fit] | None = None
     effects already fitted on ``start``. Also returns the single gear effects fitted on the
     final model of this stage (None when none were)."""
     current, table, singles, known = start, [], None, known or {}
-    names = list(rig.applicable(problem.kind))
+    names = list(rig.applicable(problem.kind, problem.base.inputs))
     gear = fx.applicable(problem.kind)
     while names:
         fits = {}
@@ -145,6 +145,10 @@ def _rig_signature(problem: Problem, name: str, without: Fit, fit: Fit) -> bool:
                                      inputs["branch_direction"][rows])
     if name == "drive_ripple":
         return drive.coherent_at_crossing(problem, without, fit)
+    if name == "block_drift":
+        own = np.array([e == name for e, _ in fit.labels])
+        return rig.same_in_blocks(without.residual(problem), fit.columns[:, own] @ fit.beta[own],
+                                  inputs["block_position"][rows])
     if name != "encoder_interpolation":
         return True
     angle = inputs["measured_rad"][rows]

@@ -26,7 +26,7 @@ from scipy.ndimage import median_filter
 from ..catalog import Catalog
 from ..models import GearModel
 from . import baseline as baselines
-from . import frames, readings, refine, seconds
+from . import frames, readings, refine, rig_alike, seconds
 from . import regions as rg
 from . import search
 from . import units
@@ -218,7 +218,8 @@ def reconcile(kind: str, data: dict, model: GearModel, catalog: Catalog,
     steps = _steps(problem, named, candidates, final, keep)
     beside = {r: _rmse((base.y - f.prediction)[keep]) for r, f in beside_fits.items()}
     measurement = [f.as_dict() for f in fixes] + [
-        rig_entry(problem, final, e)
+        rig_alike.mark(problem, rig_entry(problem, final, e),
+                       rig_alike.rivals(problem, final, e, sigma, tau))
         for e in final.effects if e in search.rig.RIG_EFFECTS]
     if "sensor_gain" not in final.effects:
         measurement += output_gain_entry(problem, final, sigma, tau)
