@@ -7,6 +7,10 @@ lets it warm up (1 − exp(−rows/τ)), suite K's tare creeps as log(1 + t/τ) 
 suite P's torque zero drifts from each oven block's start. None of these is a gear effect,
 and none is a drift over the whole record.
 
+A torque channel's range switched in the middle of a temperature block (suite J): the
+efficiency steps once in row order, for every later row, whatever their load, speed or
+temperature.
+
 An output encoder mounted off-centre over a fraction of an output revolution: the arc of its
 once-per-revolution sine reads as a slow drift with test time, and the reverse. Over a
 revolution or more the two part.
@@ -55,6 +59,16 @@ def test_a_drift_that_restarts_at_each_oven_block_is_the_rig_s(name):
 def test_clean_data_in_oven_blocks_get_no_block_drift():
     case, result = case_run("p", "p-efficiency-clean-clean-factorial-oven-blocks-049")
     assert result["measurement_effects"] == [] and result["missing_effects"] == []
+
+
+def test_a_gain_that_steps_during_an_efficiency_test_is_the_rig_s():
+    """It left 8.0× the noise unexplained before the step was looked for (seed 11), and a
+    drift over the whole record had taken half of it a session earlier."""
+    case, result = case_run("j", "j-efficiency-decoy_separable-sensor_gain-rangeswitch-000")
+    entries = {m["effect"]: m for m in result["measurement_effects"]}
+    assert set(entries) == {"sensor_gain"} and result["missing_effects"] == []
+    assert "gain changed during the test" in entries["sensor_gain"]["reading"]
+    assert result["rmse_after"] <= 1.2 * case.noise_rms
 
 
 @pytest.mark.parametrize("name", [

@@ -43,7 +43,7 @@ def rig_params(problem: Problem, fit: Fit, effect: str) -> dict[str, dict]:
     unit = problem.base.unit
     out = {k: {"value": v, "unit": p.unit if p.unit == "-" else unit}
            for k, v in b.items() for p in RIG_EFFECTS[effect].parameters if p.name == k}
-    if effect == "angle_offset":
+    if effect == "angle_offset" or "gain_step" in b:
         out["at_record_position"] = {"value": problem.step_position, "unit": "-"}
     if effect == "thermal_drift":
         out["tau"] = {"value": fit.theta["thermal_drift.tau"], "unit": "half-records"}
@@ -89,6 +89,11 @@ def rig_entry(problem: Problem, fit: Fit, effect: str) -> dict:
             "gear's own error the catalog does not name; check the motor and coupling")
     if effect == "block_drift":
         entry["reading"] = _block_drift_reading(problem, params)
+    if "gain_step" in params:
+        row = int(np.searchsorted(problem.base.inputs["record_position"], problem.step_position))
+        entry["reading"] = (f"the efficiency reads {params['gain_step']['value']:+.3g} %-points "
+                            f"from row {row + 1} on: a channel's gain changed during the test "
+                            "(a torque range switched, a recalibration)")
     if "T_off" in params:
         entry["reading"] = (f"the torque channel's zero is off by {params['T_off']['value']:.4g} "
                             "N·m (an untared bridge, a tare taken under load): the gear "

@@ -135,12 +135,18 @@ RIG_EFFECTS: dict[str, Effect] = {e.name: e for e in (
                      "(1 + g_T) times the true torque (a shunt or calibration constant), so "
                      "the catalog curve's corners T1 and T2 sit at (1 + g_T)·T1 and "
                      "(1 + g_T)·T2 of the recorded torque; a twist sensor's gain scales "
-                     "every segment alike and reads as the stiffness scale instead."),
-        form="transmission: y += g·φ/R; torsion: y = s·θ_catalog(T/(1 + g_T)) + …",
+                     "every segment alike and reads as the stiffness scale instead. "
+                     "Efficiency: a gain is the level's; a gain that changes once during "
+                     "the test (a torque channel's range switched, a recalibration) is a "
+                     "step of the efficiency at one row, in row order."),
+        form=("transmission: y += g·φ/R; torsion: y = s·θ_catalog(T/(1 + g_T)) + …; "
+              "efficiency: y += s·[u ≥ u0], u0 at the residual's largest cumulative-sum "
+              "excursion"),
         parameters=(_linear("g", "-", "relative gain error of the output angle"),
                     Parameter("torque_gain", "-", "relative gain error of the torque channel",
-                              -TORQUE_GAIN_LIMIT, TORQUE_GAIN_LIMIT, "1", start=0.0)),
-        kinds=("transmission", "torsion")),
+                              -TORQUE_GAIN_LIMIT, TORQUE_GAIN_LIMIT, "1", start=0.0),
+                    _linear("gain_step", "%", "step of the efficiency where a gain changed")),
+        kinds=("transmission", "torsion", "efficiency")),
     Effect(
         name="torque_offset",
         description=("The torque channel's zero is off (a bridge left untared, a tare taken "
@@ -177,7 +183,12 @@ def applicable(kind: str, inputs: dict[str, np.ndarray] | None = None) -> tuple[
 # the output angle's in transmission (a column) and the torque channel's in torsion (read
 # through the catalog curve's corners by the baseline, at TORQUE_GAIN_KEY).
 KIND_PARAMETERS = {("sensor_gain", "transmission"): ("g",),
-                   ("sensor_gain", "torsion"): ("torque_gain",)}
+                   ("sensor_gain", "torsion"): ("torque_gain",),
+                   ("sensor_gain", "efficiency"): ("gain_step",)}
+
+# Measurement effects placed at a step in record order (rig.step_position) in a kind.
+STEPPED = {("angle_offset", k) for k in ("torsion", "transmission", "vibration")} | {
+    ("sensor_gain", "efficiency")}
 TORQUE_GAIN_KEY = key_of("sensor_gain", "torque_gain")
 TORQUE_OFFSET_KEY = key_of("torque_offset", "T_off")
 
@@ -210,6 +221,8 @@ def columns(name: str, kind: str, inputs: dict[str, np.ndarray], step_position: 
     if name == "encoder_eccentricity":
         out = inputs["output_angle_rad"]
         return ["a", "b"], np.column_stack([np.sin(out), np.cos(out)])
+    if name == "sensor_gain" and kind == "efficiency":
+        return ["gain_step"], (u >= step_position).astype(float)
     if name == "sensor_gain":
         return ["g"], inputs["output_angle_rad"]
     if name == "sensor_play":
