@@ -95,14 +95,17 @@ def select_rig(problem: Problem, start: Fit, known: dict[str, Fit] | None = None
                    else fit_model(problem, current.effects + (n,), current.theta)
                    for n in gear}
         rivals = list(singles.values())
-        sigma, tau = round_noise(problem, list(fits.values()) + rivals)
+        own = {n: _rig_signature(problem, n, current, f) for n, f in fits.items()}
+        # a candidate without its own signature leaves the round's noise alone (its columns
+        # would take the noise's correlation and raise every other candidate's evidence)
+        sigma, tau = round_noise(problem, [f for n, f in fits.items() if own[n]] + rivals)
         gates = {n: gate(problem, current, f, sigma, tau) for n, f in fits.items()}
         alone = {n: gate(problem, current, f, sigma, tau).delta_bic for n, f in singles.items()}
         rival = max(alone.values(), default=-math.inf)
         # with its own signature, and beating every gear effect alone or coming within
         # BIC_MIN of the best (then reported beside it as a reading the data barely refuse)
         near = {n: g.passes() and g.delta_bic > rival - BIC_MIN for n, g in gates.items()}
-        signed = {n: near[n] and _rig_signature(problem, n, current, fits[n]) for n in gates}
+        signed = {n: near[n] and own[n] for n in gates}
         beats = {n: signed[n] and gates[n].delta_bic > rival for n in gates}
         twin = {n: alone.get(GEAR_TWIN.get((problem.kind, n)), -math.inf) for n in gates}
         held = {n: beats[n] and g.delta_bic <= twin[n] + BIC_MIN for n, g in gates.items()}
