@@ -15,7 +15,8 @@ from .gates import BIC_MIN, EXPLAINED_MIN, rss_bic_gain
 from .model_columns import drift_labels, parameters_of, stribeck_takes
 from .harmonics import TE_LABELS, frames_of, legendre, te_order_of
 from .drive import crossing_rpm
-from .rig import RIG_EFFECTS, TORQUE_GAIN_KEY, TORQUE_OFFSET_KEY
+from .rig import RIG_EFFECTS, STEPPED, TORQUE_GAIN_KEY, TORQUE_OFFSET_KEY, block_starts
+from .rig import columns as rig_columns
 from .stribeck import hersey_params
 
 
@@ -43,7 +44,7 @@ def rig_params(problem: Problem, fit: Fit, effect: str) -> dict[str, dict]:
     unit = problem.base.unit
     out = {k: {"value": v, "unit": p.unit if p.unit == "-" else unit}
            for k, v in b.items() for p in RIG_EFFECTS[effect].parameters if p.name == k}
-    if effect == "angle_offset" or "gain_step" in b:
+    if (effect, problem.kind) in STEPPED:
         out["at_record_position"] = {"value": problem.step_position, "unit": "-"}
     if effect == "thermal_drift":
         out["tau"] = {"value": fit.theta["thermal_drift.tau"], "unit": "half-records"}
@@ -105,12 +106,14 @@ def _block_drift_reading(problem: Problem, params: dict[str, dict]) -> str:
     """What a per-block drift says: how far it goes within a block, in how many blocks."""
     v = problem.base.inputs["block_position"]
     grid = np.linspace(0.0, float(v.max()), 201)
-    d1, d2, tau = (params[k]["value"] for k in ("d1", "d2", "tau"))
-    drift = d1 * grid + d2 * -np.expm1(-grid / tau)
+    labels, cols = rig_columns("block_drift", problem.kind, {"record_position": grid,
+                                                             "block_position": grid},
+                               problem.step_position, {"tau": params["tau"]["value"]})
+    drift = cols @ np.array([params[k]["value"] for k in labels])
     peak = float(drift[np.argmax(np.abs(drift))])
     unit = "%-points" if problem.base.unit == "%" else problem.base.unit
     return (f"the reading drifts by up to {peak:+.3g} {unit} within each of the "
-            f"{int(np.count_nonzero(v == 0.0))} temperature blocks and starts again at each "
+            f"{len(block_starts(v))} temperature blocks and starts again at each "
             "(a channel re-zeroed as each block starts, then warming or creeping): let the "
             "rig settle, or zero it, before each block's first point")
 

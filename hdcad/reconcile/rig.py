@@ -216,13 +216,13 @@ def columns(name: str, kind: str, inputs: dict[str, np.ndarray], step_position: 
     if name == "block_drift":
         v = inputs["block_position"]
         return ["d1", "d2"], np.column_stack([v, -np.expm1(-v / theta["tau"])])
-    if name == "angle_offset":
-        return ["step"], (u >= step_position).astype(float)
+    if (name, kind) in STEPPED:  # the linear amplitude of a step at step_position
+        label = next(p.name for p in _in_kind(name, kind, RIG_EFFECTS[name].parameters)
+                     if p.linear)
+        return [label], (u >= step_position).astype(float)
     if name == "encoder_eccentricity":
         out = inputs["output_angle_rad"]
         return ["a", "b"], np.column_stack([np.sin(out), np.cos(out)])
-    if name == "sensor_gain" and kind == "efficiency":
-        return ["gain_step"], (u >= step_position).astype(float)
     if name == "sensor_gain":
         return ["g"], inputs["output_angle_rad"]
     if name == "sensor_play":
@@ -405,12 +405,19 @@ def block_position(setting: np.ndarray) -> np.ndarray | None:
     return (np.arange(len(setting)) - first) / float(np.median(lengths))
 
 
+def block_starts(position: np.ndarray) -> np.ndarray:
+    """Indices where a block starts in ``block_position`` values, on every row or on the fit
+    rows (where a block's first row may be left out as an outlier): the position falls or
+    stays."""
+    return np.flatnonzero(np.diff(position, prepend=np.inf) <= 0)
+
+
 def same_in_blocks(residual: np.ndarray, drift: np.ndarray, position: np.ndarray) -> bool:
     """A drift that restarts at each block has its shape in most blocks, not in one or two:
     within each block long enough to show it, the fitted ``drift`` and the ``residual`` it
     takes, each less its block mean, go the same way (positive product) in at least
     ``SAME_SIGN_SHARE`` of the blocks."""
-    starts = np.flatnonzero(position == 0.0)
+    starts = block_starts(position)
     ends = np.append(starts[1:], len(position))
     alike = [np.dot(drift[a:b] - drift[a:b].mean(), residual[a:b] - residual[a:b].mean()) > 0
              for a, b in zip(starts, ends) if b - a >= BLOCK_ROWS_MIN]

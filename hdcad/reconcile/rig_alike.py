@@ -19,9 +19,11 @@ from __future__ import annotations
 
 import numpy as np
 
+from . import rig
 from .fitting import Fit, Problem
+from .model_columns import _inputs_on
 from .params import _significant
-from .rig import WARM_UP_TAU, warm_up
+from .rig import WARM_UP_TAU
 
 # The drifts a rival reading is drawn with: warm-ups over the fitted range of time constants
 # (WARM_UP_TAU), each beside its straight line; the drift reads the same if one of them does.
@@ -33,12 +35,10 @@ ALIKE = ("thermal_drift", "encoder_eccentricity")
 
 def _rival_columns(problem: Problem, name: str) -> list[np.ndarray]:
     """The designs a rival may take on the fit rows (a drift's for each time constant)."""
-    inputs, rows = problem.base.inputs, problem.rows
-    if name == "thermal_drift":
-        u = inputs["record_position"][rows]
-        return [np.column_stack([u, warm_up(u, t)]) for t in RIVAL_TAUS]
-    out = inputs["output_angle_rad"][rows]
-    return [np.column_stack([np.sin(out), np.cos(out)])]
+    inputs = _inputs_on(problem, False)
+    taus = RIVAL_TAUS if name == "thermal_drift" else (None,)
+    return [rig.columns(name, problem.kind, inputs, problem.step_position, {"tau": t})[1]
+            for t in taus]
 
 
 def rivals(problem: Problem, fit: Fit, effect: str, sigma: float, tau: float) -> list[str]:
