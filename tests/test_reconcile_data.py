@@ -165,10 +165,13 @@ def test_cli_out_writes_plots_and_report(tmp_path, capsys):
     code, text, _ = run(capsys, "reconcile", "transmission", csv, "--model", "CSF-32-100-GH",
                         "--out", out)
     assert code == 0
-    assert {p.name for p in out.iterdir()} - {".hdcad-manifest.json"} == {"comparison.svg", "residuals.svg", "report.html",
-                                              "report.pdf"}
+    assert {p.name for p in out.iterdir()} - {".hdcad-manifest.json"} == {
+        "comparison.svg", "residuals.svg", "residuals_in_order.svg", "report.html", "report.pdf"}
     html = (out / "report.html").read_text(encoding="utf-8")
-    assert "te_2x" in html and "comparison.svg" in html
+    assert "te_2x" in html and "comparison.svg" in html and "residuals_in_order.svg" in html
+    # the order plot's axis is the record's rows, the other's the WG angle
+    assert "test order" in (out / "residuals_in_order.svg").read_text(encoding="utf-8")
+    assert "test order" not in (out / "residuals.svg").read_text(encoding="utf-8")
     assert len(pypdf.PdfReader(str(out / "report.pdf")).pages) >= 1
 
 

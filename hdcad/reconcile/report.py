@@ -1,7 +1,9 @@
 """Plots and the short report of ``hdcad reconcile --out DIR``.
 
 Writes into a folder: ``comparison.svg`` (measured vs baseline vs reconciled),
-``residuals.svg`` (residual maps before and after), ``report.html`` and ``report.pdf``
+``residuals.svg`` (residual maps before and after against the kind's operating variable),
+``residuals_in_order.svg`` (the same residuals in the record's row order, where a drift with
+test time, a re-zeroed sensor or a switched range shows), ``report.html`` and ``report.pdf``
 (rendered from ``templates/reconcile_report.html.j2`` with the report machinery of the
 calculation sheet, :mod:`hdcad.report.render`). The template only formats: every number is
 computed and formatted here. matplotlib and WeasyPrint are imported only when a report is
@@ -28,6 +30,7 @@ X_AXIS = {"torsion": ("torque_Nm", "torque T [N·m]"),
           "transmission": ("wg_angle_rad", "WG angle φ mod 2π [rad]"),
           "efficiency": ("alpha", "load ratio α = T/Tr [-]"),
           "vibration": ("input_speed_rpm", "input speed [r/min]")}
+ORDER_LABEL = "row of the record (test order) [-]"
 Y_LABEL = {"torsion": "twist [rad]", "transmission": "output − input/R [rad]",
            "efficiency": "efficiency [%]", "vibration": "output vibration [rad]"}
 
@@ -88,13 +91,16 @@ def comparison_plot(result: Reconciliation, path: Path) -> Path:
     return path
 
 
-def residual_plot(result: Reconciliation, path: Path) -> Path:
-    """Residual maps: before (baseline) and after (reconciled), with ±noise RMS bands."""
+def residual_plot(result: Reconciliation, path: Path, in_order: bool = False) -> Path:
+    """Residual maps: before (baseline) and after (reconciled), with ±noise RMS bands,
+    against the kind's operating variable or, ``in_order``, against the row of the record
+    (the order the test ran in: what changes with test time, not with the load, shows
+    there)."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     s = result.series
-    x = _x(result)
+    x = np.arange(len(s["measured"]), dtype=float) if in_order else _x(result)
     i = _pick(len(x))
     fig, axes = plt.subplots(2, 1, figsize=(7.0, 4.6), sharex=True)
     for ax, name, title in ((axes[0], "baseline", "before: measured − baseline"),
@@ -106,7 +112,7 @@ def residual_plot(result: Reconciliation, path: Path) -> Path:
         ax.set_title(title, fontsize=8)
         ax.set_ylabel(f"residual [{result.unit}]")
         ax.grid(alpha=0.3)
-    axes[1].set_xlabel(X_AXIS[result.kind][1])
+    axes[1].set_xlabel(ORDER_LABEL if in_order else X_AXIS[result.kind][1])
     fig.tight_layout()
     fig.savefig(path, dpi=RASTER_DPI)
     plt.close(fig)
@@ -169,12 +175,18 @@ def write_report(result: Reconciliation, folder: Path) -> list[str]:
     folder.mkdir(parents=True, exist_ok=True)
     comparison_plot(result, folder / "comparison.svg")
     residual_plot(result, folder / "residuals.svg")
+    residual_plot(result, folder / "residuals_in_order.svg", in_order=True)
     figures = [{"file": "comparison.svg",
                 "caption": "Measured data, the catalog baseline and the reconciled model."},
                {"file": "residuals.svg",
                 "caption": "Residuals before and after; dashed: ± the noise RMS estimated "
-                           "from the data."}]
+                           "from the data."},
+               {"file": "residuals_in_order.svg",
+                "caption": "The same residuals in the record's row order: a drift with test "
+                           "time, a step where a sensor was re-zeroed or a range switched, "
+                           "blocks run at one temperature."}]
     html = render_html(TEMPLATE, report_context(result, figures))
     (folder / "report.html").write_text(html, encoding="utf-8")
     write_pdf(html, folder / "report.pdf", folder)
-    return ["comparison.svg", "residuals.svg", "report.html", "report.pdf"]
+    return ["comparison.svg", "residuals.svg", "residuals_in_order.svg", "report.html",
+            "report.pdf"]
