@@ -19,7 +19,7 @@ import numpy as np
 import pytest
 from truth_runs import bench, case_run, named_case
 
-from hdcad.reconcile import rig
+from hdcad.reconcile import encoder_ripple, rig
 
 
 @pytest.mark.parametrize("lines", [9000, 18000, 36000])
@@ -33,7 +33,7 @@ def test_the_encoder_s_signal_period_is_found_in_unevenly_spread_angles(lines):
     twist = 12 * period * np.sign(torque) * np.abs(torque) ** 0.7
     ripple = 0.03 * period * np.sin(2 * math.pi * twist / period + 1.0)
     residual = ripple + rng.normal(0, 0.01 * period, twist.size)
-    assert rig.angle_period(residual, twist) == pytest.approx(period, rel=0.01)
+    assert encoder_ripple.angle_period(residual, twist) == pytest.approx(period, rel=0.01)
 
 
 @pytest.mark.parametrize("name", ["h-torsion-decoy_separable-none-interp-001",
@@ -60,7 +60,7 @@ def test_the_readings_of_a_dwell_count_as_one_place():
     steps = np.repeat(np.linspace(-1e-3, 1e-3, 60), 8)
     reading = steps + rng.normal(0, 1e-7, steps.size)
     residual = rng.normal(0, 1e-6, steps.size)
-    assert rig.angle_period(residual, reading) >= 8 * np.ptp(reading) / 60 * 0.99
+    assert encoder_ripple.angle_period(residual, reading) >= 8 * np.ptp(reading) / 60 * 0.99
 
 
 def test_a_quantised_reading_gives_no_ripple_at_its_step():
@@ -71,9 +71,9 @@ def test_a_quantised_reading_gives_no_ripple_at_its_step():
     twist = np.sort(rng.uniform(-1.0, 1.0, 4000)) * 2e-3
     q = 1e-4
     reading = q * np.round(twist / q)
-    assert rig.quantum(reading) == pytest.approx(q)
-    assert rig.quantum(twist) == 0.0
-    assert rig.angle_period(reading - twist, reading) >= 4 * q
+    assert encoder_ripple.quantum(reading) == pytest.approx(q)
+    assert encoder_ripple.quantum(twist) == 0.0
+    assert encoder_ripple.angle_period(reading - twist, reading) >= 4 * q
 
 
 def test_a_housing_spring_under_quantised_noise_is_not_read_as_an_encoder_ripple():
@@ -457,10 +457,10 @@ def test_a_ripple_is_a_line_and_a_drift_is_a_continuum():
     angle = np.linspace(0.0, 0.2, 3000)
     period = 0.2 / 40
     noise = rng.normal(0, 1.0, angle.size)
-    assert rig.is_line(0.5 * np.sin(2 * math.pi * angle / period) + noise, angle, period)
+    assert encoder_ripple.is_line(0.5 * np.sin(2 * math.pi * angle / period) + noise, angle, period)
     walk = np.cumsum(rng.normal(0, 1.0, angle.size))
     walk *= 10 / walk.std()
-    assert not any(rig.is_line(walk + noise, angle, 0.2 / k) for k in (5, 8, 12, 20, 40))
+    assert not any(encoder_ripple.is_line(walk + noise, angle, 0.2 / k) for k in (5, 8, 12, 20, 40))
 
 
 def test_an_output_ripple_at_a_wg_order_is_the_gear_s():
@@ -470,7 +470,7 @@ def test_an_output_ripple_at_a_wg_order_is_the_gear_s():
     are not."""
     span = 3 * 2 * math.pi / 100
     per_wg = lambda k: 2 * math.pi / 100 / k  # period [rad of output] of k per WG revolution
-    assert not rig.off_the_gear_orders(per_wg(3), 100, span)
-    assert not rig.off_the_gear_orders(per_wg(8), 100, span)
-    assert rig.off_the_gear_orders(per_wg(3.5), 100, span)
-    assert rig.off_the_gear_orders(per_wg(20.5), 100, span)
+    assert not encoder_ripple.off_the_gear_orders(per_wg(3), 100, span)
+    assert not encoder_ripple.off_the_gear_orders(per_wg(8), 100, span)
+    assert encoder_ripple.off_the_gear_orders(per_wg(3.5), 100, span)
+    assert encoder_ripple.off_the_gear_orders(per_wg(20.5), 100, span)

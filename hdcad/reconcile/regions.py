@@ -16,7 +16,7 @@ from scipy.optimize import minimize_scalar
 
 from .fitting import Problem
 from .harmonics import harmonic, te_order_of
-from .rig import periodogram_peak
+from .encoder_ripple import periodogram_peak
 
 # Significance of a region or a harmonic: z-score against the noise, and a floor relative
 # to the noise so that negligible structure is not reported.
@@ -149,7 +149,7 @@ def ripples(problem: Problem, residual: np.ndarray, sigma: float, tau: float,
     orders that are neither in ``HARMONIC_ORDERS`` (reported by :func:`harmonics`) nor in
     ``known``, the strongest first.
 
-    The residual's periodogram against the WG angle (:func:`.rig.periodogram_peak`, a bin
+    The residual's periodogram against the WG angle (:func:`.encoder_ripple.periodogram_peak`, a bin
     per row) gives the strongest order in ``RIPPLE_ORDERS``, refined to the best-fitting
     sine on the samples themselves; it is significant when its RMS exceeds the noise's
     standard error σ/√N_eff by ``HARMONIC_Z`` standard errors with the look-elsewhere cost

@@ -5,7 +5,8 @@ reviewer knows whether to fix the rig or the model. Effects of the rig that are 
 nuisance of the catalog model are not separable and are said so instead: a twist sensor's
 gain in torsion reads as the stiffness scale (a torque channel's gain or zero moves the catalog
 curve's corners and is fitted), a torque sensor's gain in efficiency as the level.
-Channels in the wrong unit are found before any fit (:mod:`.units`).
+Channels in the wrong unit are found before any fit (:mod:`.units`); an encoder's
+interpolation ripple's period and signatures are in :mod:`.encoder_ripple`.
 
 References
 ----------
@@ -256,142 +257,6 @@ def apart_at_the_tips(residual: np.ndarray, torque: np.ndarray,
     return at_mid != 0.0 and at_tip / at_mid >= TIP_RATIO_MIN
 
 
-# Periods an encoder's interpolation error is looked for at: at least PERIODS_MIN of them
-# over the measured span (over fewer, a ripple and its harmonics are as much a smooth error
-# of the curve's shape, a play's or a joint's), and at least SAMPLES_PER_PERIOD places read
-# per period on average.
-PERIODS_MIN = 4
-SAMPLES_PER_PERIOD = 8
-QUANTA_PER_PERIOD = 4
-RIPPLE_SHARE_MIN = 0.25
-
-
-def quantum(angle: np.ndarray) -> float:
-    """The step of a quantised reading (the smallest step between the values it takes when
-    it takes fewer than half as many values as it has rows), else 0."""
-    values = np.unique(angle)
-    if len(values) < 2 or len(values) >= len(angle) / 2:
-        return 0.0
-    return float(np.min(np.diff(values)))
-
-
-def ripple_everywhere(before: np.ndarray, after: np.ndarray, angle: np.ndarray) -> bool:
-    """An encoder's ripple is the same over the whole span of the angle: the fit that adds
-    it (residual ``after``, from ``before``) lowers the mean-square residual in each third
-    of the span by at least RIPPLE_SHARE_MIN of what it does over all rows. A structure at
-    one place (a play at zero twist) fitted by a few periods of ripple is not."""
-    edges = np.linspace(angle.min(), angle.max(), 4)
-    third = np.clip(np.searchsorted(edges, angle, side="right") - 1, 0, 2)
-    overall = np.mean(before ** 2) - np.mean(after ** 2)
-    gains = [np.mean(before[third == k] ** 2) - np.mean(after[third == k] ** 2)
-             for k in range(3) if np.any(third == k)]
-    return overall > 0 and min(gains) >= RIPPLE_SHARE_MIN * overall
-
-
-def angle_period(residual: np.ndarray, angle: np.ndarray,
-                 excluded: tuple[float, ...] = (), width: float = 0.0,
-                 fine: bool = False) -> float:
-    """Signal period [unit of ``angle``] of the strongest ripple of ``residual`` that
-    repeats in the measured ``angle``: the peak of its periodogram over the angle
-    (:func:`periodogram_peak`, bins of a quarter of the shortest period), away from the
-    frequencies ``excluded`` [1/unit of ``angle``] by more than ``width``; ``fine`` for an
-    angle that runs one way over many periods (an output angle), whose fit has a minimum in
-    the period narrower than the padded grid's step."""
-    span = float(np.ptp(angle)) or 1.0
-    # rows at the same angle (the readings of a dwell) count once; a period near the step of
-    # a quantised reading would alias into a slow function of it
-    places = np.unique(_bins(angle, span, len(angle))).size
-    shortest = max(SAMPLES_PER_PERIOD * span / places, QUANTA_PER_PERIOD * quantum(angle))
-    longest = span / PERIODS_MIN
-    if shortest >= longest:
-        return longest
-    bins = int(np.ceil(4 * span / shortest))
-    return 1.0 / periodogram_peak(residual, angle, bins, (1.0 / longest, 1.0 / shortest),
-                                  excluded, width, fine)
-
-
-def periodogram_peak(values: np.ndarray, angle: np.ndarray, bins: int,
-                     band: tuple[float, float], excluded: tuple[float, ...] = (),
-                     width: float = 0.0, fine: bool = False) -> float:
-    """Frequency [1/unit of ``angle``] within ``band`` (low, high), and further than
-    ``width`` from each of ``excluded``, where the periodogram of ``values`` over ``angle``
-    peaks: the rows summed into ``bins`` bins of a uniform grid over the span and
-    transformed by FFT, zero-padded fourfold to steps of a quarter of the record's
-    resolution 1/span (a binned stand-in for the Lomb–Scargle periodogram of unevenly
-    sampled data; Lomb 1976, Scargle 1982), then to a sixty-fourth of it about the peak
-    when ``fine``."""
-    span = float(np.ptp(angle)) or 1.0
-    summed = np.bincount(_bins(angle, span, bins), values - values.mean(), bins)
-    power = np.abs(np.fft.rfft(summed, 4 * bins)) ** 2
-    freqs = np.fft.rfftfreq(4 * bins, span / bins)
-    inside = (freqs >= band[0]) & (freqs <= band[1])
-    for f in excluded:
-        inside &= np.abs(freqs - f) > width
-    if not inside.any():
-        return band[0]
-    peak = float(freqs[inside][int(np.argmax(power[inside]))])
-    if not fine:
-        return peak
-    step = 1.0 / (4.0 * span)  # the padded grid's
-    near = peak + np.linspace(-step, step, 33)
-    centres = (np.arange(bins) + 0.5) * span / bins
-    return float(near[int(np.argmax(_dft_power(summed, centres, near)))])
-
-
-# A ripple is a line in the periodogram: its power at least LINE_RATIO times the median over
-# the band a factor LINE_BAND either side of it (outside LINE_STEPS steps of the record's
-# resolution about it). A drift with time (a random walk's power falls as 1/f²) is a
-# continuum whose strongest ordinate stands a few times above its neighbours at most.
-LINE_RATIO = 10.0
-LINE_BAND = 1.5
-LINE_STEPS = 2.0
-
-
-def is_line(residual: np.ndarray, angle: np.ndarray, period: float) -> bool:
-    """Whether ``residual`` has a line at ``period`` [unit of ``angle``] in its periodogram
-    over ``angle`` standing ``LINE_RATIO`` above the continuum about it."""
-    span = float(np.ptp(angle)) or 1.0
-    f0 = 1.0 / period
-    resolution = 1.0 / span
-    freqs = np.linspace(f0 / LINE_BAND, f0 * LINE_BAND, 256)
-    near = np.abs(freqs - f0) <= LINE_STEPS * resolution
-    if near.all():
-        return False
-    power = _dft_power(residual - residual.mean(), angle, np.append(freqs[~near], f0))
-    return bool(power[-1] >= LINE_RATIO * np.median(power[:-1]))
-
-
-def _dft_power(values: np.ndarray, angle: np.ndarray, freqs: np.ndarray) -> np.ndarray:
-    """|Σ v·exp(−2πi·f·angle)|² at each of ``freqs`` (in blocks, to bound the memory)."""
-    out = np.empty(len(freqs))
-    for i in range(0, len(freqs), 32):
-        f = freqs[i:i + 32]
-        out[i:i + 32] = np.abs(np.exp(-2j * np.pi * np.outer(f, angle)) @ values) ** 2
-    return out
-
-
-# The wave generator's orders an output encoder's ripple is kept away from in transmission
-# (the gear's own error and its overtones repeat at k per WG revolution), by this many steps
-# of the record's resolution 1/span (a line's main lobe: closer, the two are one line)
-GEAR_ORDERS = 8
-GEAR_ORDER_STEPS = 1.0
-
-
-def gear_orders(ratio: float, span_rad: float) -> tuple[tuple[float, ...], float]:
-    """The frequencies [1/rad of output angle] of the WG orders 1 … ``GEAR_ORDERS`` for a
-    gear of ``ratio`` R (k·R/2π: k per WG revolution) and the width kept from each
-    (``GEAR_ORDER_STEPS`` of the resolution 1/span of an output-angle record ``span_rad``)."""
-    return (tuple(k * ratio / (2.0 * np.pi) for k in range(1, GEAR_ORDERS + 1)),
-            GEAR_ORDER_STEPS / (span_rad or 1.0))
-
-
-def off_the_gear_orders(period_rad: float, ratio: float, span_rad: float) -> bool:
-    """Whether an output-angle ripple of ``period_rad`` stays away from every WG order
-    (:func:`gear_orders`): one on a WG order is as much the gear's error as the encoder's."""
-    orders, width = gear_orders(ratio, span_rad)
-    return all(abs(1.0 / period_rad - f) > width for f in orders)
-
-
 def block_position(setting: np.ndarray) -> np.ndarray | None:
     """Each row's position within its block: rows since the block's first row over the
     median block's rows (a rig's warm-up runs in time, and each row takes about as long),
@@ -427,11 +292,6 @@ def same_in_blocks(residual: np.ndarray, drift: np.ndarray, position: np.ndarray
 SAME_SIGN_SHARE = 2.0 / 3.0
 
 
-def _bins(angle: np.ndarray, span: float, count: int) -> np.ndarray:
-    """The bin (0 … count − 1) of each angle on a uniform grid of ``count`` over the span."""
-    return np.minimum(((angle - angle.min()) / span * count).astype(int), count - 1)
-
-
 def warm_up(u: np.ndarray, tau: float) -> np.ndarray:
     """1 − exp(−(u + 1)/τ) less its least-squares line over u ∈ [−1, 1], scaled to a peak
     of 1: what a first-order warm-up from the start of the test adds to a linear drift
@@ -465,3 +325,4 @@ def step_position(residual: np.ndarray, position: np.ndarray) -> float:
     stat = np.abs(cusum) / np.sqrt(k * (n - k) / n)
     i = int(np.argmax(stat[n // 50: n - n // 50]) + n // 50) if n > 100 else int(np.argmax(stat))
     return float(0.5 * (position[i] + position[i + 1]))
+

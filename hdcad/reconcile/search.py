@@ -37,7 +37,7 @@ from dataclasses import replace
 import numpy as np
 
 from . import effects as fx
-from . import drive, rig, seconds, springs
+from . import drive, encoder_ripple, rig, seconds, springs
 from .fitting import Fit, Problem, fit_model, rss_at
 from .gates import (BIC_MIN, GATE_NOTE, SECOND_TRY_EXPLAINED_MIN, Candidate, Gate, bic_gain,
                     effective_n, gate, has_evidence, round_noise)
@@ -86,7 +86,7 @@ def select_rig(problem: Problem, start: Fit, known: dict[str, Fit] | None = None
                 if not problem.drive_order:  # the run-up crosses no order's resonance
                     continue
             if name == "encoder_interpolation":
-                problem.scales["angle_period"] = rig.angle_period(
+                problem.scales["angle_period"] = encoder_ripple.angle_period(
                     current.residual(problem),
                     problem.base.inputs["measured_rad"][problem.rows],
                     *_gear_orders(problem))
@@ -161,7 +161,7 @@ def _rig_signature(problem: Problem, name: str, without: Fit, fit: Fit) -> bool:
     angle = inputs["measured_rad"][rows]
     if problem.kind == "transmission" and not _output_ripple(problem, without, fit, angle):
         return False
-    return rig.ripple_everywhere(without.residual(problem), fit.residual(problem), angle)
+    return encoder_ripple.ripple_everywhere(without.residual(problem), fit.residual(problem), angle)
 
 
 # A gain step explains at least this many noise variances (its place is chosen where the
@@ -189,9 +189,9 @@ def _output_ripple(problem: Problem, without: Fit, fit: Fit, angle: np.ndarray) 
     (there it is as much the gear's error) and a line in the periodogram over the output
     angle, which runs one way over many of its periods (a drift with time is a continuum)."""
     period = fit.theta[fx.key_of("encoder_interpolation", "period")]
-    return (rig.off_the_gear_orders(period, problem.base.figures["ratio"][0],
+    return (encoder_ripple.off_the_gear_orders(period, problem.base.figures["ratio"][0],
                                     float(np.ptp(angle)))
-            and rig.is_line(without.residual(problem), angle, period))
+            and encoder_ripple.is_line(without.residual(problem), angle, period))
 
 
 def _gear_orders(problem: Problem) -> tuple[tuple[float, ...], float, bool]:
@@ -201,7 +201,7 @@ def _gear_orders(problem: Problem) -> tuple[tuple[float, ...], float, bool]:
     if problem.kind != "transmission":
         return (), 0.0, False
     angle = problem.base.inputs["measured_rad"][problem.rows]
-    return rig.gear_orders(problem.base.figures["ratio"][0], float(np.ptp(angle))) + (True,)
+    return encoder_ripple.gear_orders(problem.base.figures["ratio"][0], float(np.ptp(angle))) + (True,)
 
 
 def _corners_moved(problem: Problem, without: Fit, fit: Fit) -> bool:
