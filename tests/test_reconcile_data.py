@@ -437,6 +437,31 @@ def test_efficiency_as_a_fraction_is_converted():
     assert fix.column == "efficiency_pct" and fix.factor == 100.0 and "fraction" in fix.reading
 
 
+def test_efficiency_in_per_mille_is_converted_and_named_as_the_rig():
+    """A logger that counts 0.1 % steps reads 820 for 82 %: a median above 100 % is no
+    efficiency in percent. The channel passes the reading check (in ‰), is converted and
+    reported as the rig's unit; the level found is the one in percent. 1 200 ‰ stays bad
+    input (120 %-points above the band a reading may stray to)."""
+    from hdcad.catalog import load_catalog
+    from hdcad.models import resolve
+    from hdcad.reconcile import reconcile
+    from hdcad.reconcile.data import validate_data
+    catalog = load_catalog()
+    rng = np.random.default_rng(3)
+    speed, load = np.meshgrid([500.0, 1000.0, 2000.0], np.linspace(20.0, 180.0, 20))
+    eta_pct = 82.0 + 0.3 * rng.standard_normal(speed.size)
+    data = {"input_speed_rpm": speed.ravel(), "load_torque_Nm": load.ravel(),
+            "temperature_C": np.full(speed.size, 25.0), "efficiency_pct": 10.0 * eta_pct}
+    result = reconcile("efficiency", data, resolve("CSF-32-100-GH", catalog), catalog)
+    (fix,) = [m for m in result.measurement_effects if m["effect"] == "wrong_units"]
+    assert fix["factor"] == pytest.approx(0.1) and "per mille" in fix["reading"]
+    assert result.missing_effects == []
+    assert result.baseline_params["eta0"]["value"] == pytest.approx(82.0, abs=0.2)
+    with pytest.raises(InputError, match="efficiency_pct"):
+        validate_data("efficiency", dict(data, efficiency_pct=np.append(
+            data["efficiency_pct"][:-1], 2100.0)))
+
+
 @pytest.mark.parametrize("seed, name", [
     (7, "i-torsion-decoy-separable-torque-knm-torque-knm-000"),
     (13, "i-torsion-decoy-separable-torque-knm-torque-knm-001"),

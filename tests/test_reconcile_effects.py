@@ -132,6 +132,25 @@ def test_backlash_lost_motion_equals_its_parameter_and_is_direction_free():
     assert np.all(np.diff(theta) > 0)
 
 
+@pytest.mark.parametrize("p", [0.5, 1.0, 3.0])
+def test_a_play_s_engagement_exponent_keeps_its_lost_motion_and_its_width(p):
+    """(b/2)·sign(T)·tanh(|T/T_w|^p): odd, rising, the whole lost motion b far out and
+    tanh(1)·b/2 at T = T_w whatever p; p = 1 is the plain tanh; p > 1 is flatter than it
+    inside T_w and steeper past it, p < 1 the reverse."""
+    b, t_w = 4.4e-5, 0.5
+    t = np.linspace(-5, 5, 101)
+    theta = fx.backlash_twist(t, b, t_w, p)
+    np.testing.assert_allclose(theta, -theta[::-1])
+    assert np.all(np.diff(theta) >= 0) and np.all(np.diff(theta[np.abs(t) <= 2 * t_w]) > 0)
+    far = fx.backlash_twist(np.array([-100.0, 100.0]), b, t_w, p)
+    assert far[1] - far[0] == pytest.approx(b, rel=1e-9)
+    assert fx.backlash_twist(np.array([t_w]), b, t_w, p)[0] == pytest.approx(
+        0.5 * b * np.tanh(1.0), rel=1e-12)
+    plain = fx.backlash_twist(np.array([0.5 * t_w]), b, t_w)[0]
+    inside = fx.backlash_twist(np.array([0.5 * t_w]), b, t_w, p)[0]
+    assert (inside < plain) if p > 1 else (inside > plain) if p < 1 else inside == plain
+
+
 def test_housing_compliance_is_a_spring_in_series():
     """An extra spring K_h in series with the gear's spring K: 1/K_total = 1/K + 1/K_h."""
     k, k_h = 148300.0, 5.0e5                # FD-32 spring constant (table 314-1)

@@ -29,7 +29,7 @@ import bench_truth_suites as bench  # noqa: E402
 
 SUITES = sorted((ROOT / "truths").glob("truth_*.py"))
 SEED, PER_CELL = 11, 1
-HELD_OUT = "q"
+HELD_OUT = "r"
 DEVELOPMENT_CATEGORIES = ("clean", "decoy_separable")
 
 

@@ -39,6 +39,7 @@ MIN_WG_REVOLUTIONS = 1.0
 # torque reading carries it above 100 %; such rows are kept (a gross one is set aside as an
 # outlier, a drift is the rig's). Beyond this band a row is no efficiency.
 EFFICIENCY_READING_PCT = (-100.0, 200.0)
+PER_MILLE = 10.0  # an efficiency read in ‰ is 10× its value in %
 
 
 def check_kind(kind: str) -> str:
@@ -152,9 +153,13 @@ def check_revolutions(d: dict[str, np.ndarray]) -> None:
 def _check_efficiency(d: dict[str, np.ndarray]) -> None:
     eta = d["efficiency_pct"]
     low, high = EFFICIENCY_READING_PCT
-    if eta.min() < low or eta.max() > high:
+    # a median above 100 % is no efficiency in percent: a reading in per mille (a logger's
+    # counts of 0.1 %), converted with the units (units.find_fix)
+    per_mille = PER_MILLE if np.median(eta) > 100.0 else 1.0
+    if eta.min() < low * per_mille or eta.max() > high * per_mille:
         raise InputError("efficiency_pct", f"must lie in {low:g}…{high:g} % (an efficiency, "
-                                           "0…100 %, with its reading's error)")
+                                           "0…100 %, with its reading's error; or "
+                                           f"{low * PER_MILLE:g}…{high * PER_MILLE:g} ‰)")
     if np.median(eta) <= 0:
         raise InputError("efficiency_pct", "median must be > 0 % (most rows read no power "
                                            "out: no efficiency test)")

@@ -217,21 +217,33 @@ def hysteresis_loss(z_sat_rad: float, T_s: float, rho: float, n: float, T0: floa
     return 2.0 * z_sat_rad * float(_bouc_wen_branch(np.array([T0 / T_s]), w0, table)[0])
 
 
-def backlash_twist(torque_Nm: np.ndarray, lost_motion_rad: float, width_Nm: float) -> np.ndarray:
-    """Lost motion around zero torque [rad]: (b/2)·tanh(T/T_w).
+def backlash_twist(torque_Nm: np.ndarray, lost_motion_rad: float, width_Nm: float,
+                   exponent: float = 1.0) -> np.ndarray:
+    """Lost motion around zero torque [rad]: (b/2)·sign(T)·tanh(|T/T_w|^p).
 
     A clearance b lets the output move b with (almost) no torque; seen as twist against
     torque it is a step of height b at T = 0, smoothed over a torque width T_w (the contact
-    closes gradually). Odd and single-valued in T: unlike hysteresis, it does not depend on
-    the direction of loading. A play held by friction is crossed only once the load passes
-    the holding torque T_h in the new direction: T − d·T_h (d = +1 loading, −1 unloading;
-    fitted once backlash is named, :func:`hdcad.reconcile.refine.refine_play`).
+    closes gradually). The engagement exponent p [-] (1 while effects are named, fitted
+    once backlash is: :func:`hdcad.reconcile.refine.refine_play`) is the take-up's
+    smoothness: p > 1,
+    the play barely moves until the torque nears T_w and then closes steeply (a slider held
+    centred, lugs that touch together); p < 1, it starts at once and closes ever more
+    slowly (contact spreading over lugs or along a line); p = 1 is the plain tanh. Odd and
+    single-valued in T: unlike hysteresis, it does not depend on the direction of loading.
+    A play held by friction is crossed only once the load passes the holding torque T_h in
+    the new direction: T − d·T_h (d = +1 loading, −1 unloading; fitted once backlash is
+    named, :func:`hdcad.reconcile.refine.refine_play`).
 
     References: Karnopp, D. (1985) "Computer simulation of stick-slip friction in mechanical
     dynamic systems", J. Dyn. Syst. Meas. Control 107: 100-103 (the stuck side held until
-    the force passes the breakaway level).
+    the force passes the breakaway level). Nordin, M., Gutman, P.-O. (2002) "Controlling
+    mechanical systems with backlash — a survey", Automatica 38(10): 1633-1649 (dead-zone
+    forms, sharp and smoothed).
     """
-    return 0.5 * lost_motion_rad * np.tanh(torque_Nm / width_Nm)
+    x = np.asarray(torque_Nm, dtype=float) / width_Nm
+    if exponent == 1.0:
+        return 0.5 * lost_motion_rad * np.tanh(x)
+    return 0.5 * lost_motion_rad * np.sign(x) * np.tanh(np.abs(x) ** exponent)
 
 
 def before_first_hold(torque_Nm: np.ndarray, hold_Nm: float) -> np.ndarray:
@@ -318,7 +330,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
         description=("Lost motion around zero torque: the clearance of the wave generator's "
                      "Oldham coupling (the tooth mesh has none), measured at the output with "
                      "the input locked (seed 000 p.020; table 052-2/060-2; FD 314-1)."),
-        form=("θ = θ_catalog(T) + (b/2)·tanh(T/T_w); once named, b may change along the "
+        form=("θ = θ_catalog(T) + (b/2)·tanh(T/T_w); once named, its engagement exponent p "
+              "(sign(T)·tanh(|T/T_w|^p)) and b may change along the "
               "record u: b0 + b1·P1(u) + b2·P2(u) or a step b0 + d·[u ≥ u_s]"),
         parameters=(
             Parameter("lost_motion", "rad", "lost motion b", 0.0, 20.0, "backlash_rad",

@@ -121,6 +121,9 @@ class Problem:
     # torque at which a play is crossed, as a share of T0 (a steady torque preloads one
     # flank: a slider's weight), 0 while naming, fitted once backlash is (refine.refine_play)
     play_bias: float = 0.0
+    # ln p of a play's engagement exponent p (effects.backlash_twist): 0 (p = 1, tanh) while
+    # naming, fitted once backlash is (refine.refine_play)
+    play_shape: float = 0.0
     # a held play's position before the load first passes the holding torque (where the
     # last handling left it): a free twist, once the hold is kept (refine.refine_play)
     play_start: bool = False

@@ -125,12 +125,14 @@ def overtones_of(problem: Problem, effects: tuple[str, ...], name: str) -> list[
     return mine if name == "te_2x" else [k for k in problem.te_overtones if k not in mine]
 
 
-def sidebands(problem: Problem, order: int, full: bool) -> np.ndarray:
+def sidebands(problem: Problem, order: int, full: bool, theta: dict | None = None
+              ) -> np.ndarray:
     """sin/cos of the error at ``order`` shifted by ± j·f_m, j = 1 … the modulation's count
     (``Problem.te_sidebands``), on the fitted rows or every row (n × 4j; labelled by
     :func:`sideband_labels`): an amplitude modulation a·(1 + m·cos(f_m·φ)) gives the pair
     k ± f_m, a phase modulation of depth d the pairs k ± j·f_m in the Bessel functions
-    J_j(d) (Carson 1922).
+    J_j(d) (Carson 1922). In a vibration test (``theta`` holding the damping) the joint's
+    response to them, each at its own rate.
 
     References: Carson, J. R. (1922) "Notes on the theory of modulation", Proc. IRE 10(1):
     57-64.
@@ -138,9 +140,11 @@ def sidebands(problem: Problem, order: int, full: bool) -> np.ndarray:
     frame = frames_of(problem, order)[0]
     f_m, count = problem.te_sidebands[order]
     phi = problem.base.inputs["wg_angle_rad"]
-    cols = [g((order * (1 + frame) + side * j * f_m) * phi) for j in range(1, count + 1)
-            for side in (1, -1) for g in (np.sin, np.cos)]
-    out = np.column_stack(cols)
+    shifted = [order * (1 + frame) + side * j * f_m for j in range(1, count + 1)
+               for side in (1, -1)]
+    out = np.column_stack([g(m * phi) for m in shifted for g in (np.sin, np.cos)])
+    out = _through_joint(problem, out, lambda: np.outer(
+        2 * np.pi * problem.base.inputs["input_speed_rpm"] / 60.0, shifted), theta or {})
     return out if full else out[problem.rows]
 
 

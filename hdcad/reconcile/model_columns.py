@@ -11,6 +11,7 @@ effects scale the whole efficiency (η = η0·Ke(α)·F(t)), so they multiply ev
 
 from __future__ import annotations
 
+import math
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -97,7 +98,7 @@ def columns(problem: Problem, effects: tuple[str, ...], theta: dict[str, float],
             t0 = problem.scales["T0"]
             torque = inp["torque_Nm"] - problem.play_bias * t0
             held = torque - inp["branch_direction"] * (problem.play_hold * t0)
-            play = fx.backlash_twist(held, 1.0, th["T_w"])
+            play = fx.backlash_twist(held, 1.0, th["T_w"], math.exp(problem.play_shape))
             if problem.play_start:  # held where it was until the load first passes T_h
                 start = fx.before_first_hold(torque, problem.play_hold * t0)
                 play = np.where(start, 0.0, play)
@@ -125,7 +126,7 @@ def columns(problem: Problem, effects: tuple[str, ...], theta: dict[str, float],
                 add(name, locked_labels(problem.te_order), locked_overtone(problem, theta, full))
             if order in problem.te_sidebands:
                 add(name, sideband_labels(problem.te_sidebands[order][1]),
-                    sidebands(problem, order, full))
+                    sidebands(problem, order, full, theta))
         elif stribeck_takes(problem, name):
             if name == next(e for e in effects if stribeck_takes(problem, e)):
                 add(name, list(laws.STRIBECK_LABELS), -_stribeck(problem, inp), 0.0)

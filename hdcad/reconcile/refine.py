@@ -40,6 +40,9 @@ _SPEED_LOSS_BOUNDS = (-0.5, 0.9)  # as the viscous share a of the temperature la
 _DRAG_VISCOSITY_BOUNDS = (0.0, 2.0)
 _PLAY_HOLD_BOUNDS = (0.0, 0.3)  # holding torque of a play, as a share of the largest torque
 _PLAY_BIAS_BOUNDS = (-0.15, 0.15)  # torque a play is crossed at, as a share of the largest
+# ln p of a play's engagement exponent: p from 1/2 (a take-up that starts at once and ends
+# slowly, like an arctangent's) to 3 (one that waits, then closes like a smoothed step)
+_PLAY_SHAPE_BOUNDS = (math.log(0.5), math.log(3.0))
 # highest Legendre order of a play's lost motion along the record: wear and warmth change a
 # clearance smoothly one way over a test, a line or a parabola (higher orders took an
 # unmodelled creep or a start-up transient for a clearance swinging up and down), and a
@@ -113,8 +116,9 @@ def refine_stiffness(problem: Problem, fit: Fit) -> Fit:
 def refine_play(problem: Problem, fit: Fit) -> Fit:
     """A named backlash whose play friction holds at one side until the load passes a
     holding torque T_h in the new direction (a loop at zero torque of area b·2T_h), then one
-    crossed at a torque T_c off zero (a steady torque preloads one flank), each one
-    parameter more, kept when BIC prefers it (:func:`_one_more`). A held play's position
+    crossed at a torque T_c off zero (a steady torque preloads one flank), then one whose
+    take-up has an engagement exponent p other than tanh's 1 (:func:`.effects.backlash_twist`),
+    each one parameter more, kept when BIC prefers it (:func:`_one_more`). A held play's position
     before the load first passes T_h is where the last handling left it, anywhere within
     its clearance: fitted (one term more) where BIC prefers it to the flank the first
     branch's form would put it at."""
@@ -140,9 +144,14 @@ def refine_play(problem: Problem, fit: Fit) -> Fit:
             f"backlash: the record starts with the play at {b['start_position']:.3g} rad "
             f"(its lost motion {b['lost_motion']:.3g} rad), where the last handling left "
             "it, until the load first passes the holding torque")
-    return _one_more(problem, fit, "play_bias", _PLAY_BIAS_BOUNDS, lambda c: (
+    fit = _one_more(problem, fit, "play_bias", _PLAY_BIAS_BOUNDS, lambda c: (
         f"backlash: the play is crossed at {c * t0:.3g} N·m, not at zero torque (a steady "
         "torque preloads one flank: a slider's weight on a horizontal axis, a drag)"))
+    return _one_more(problem, fit, "play_shape", _PLAY_SHAPE_BOUNDS, lambda s: (
+        f"backlash: the play is taken up as tanh(|T/T_w|^p) with p = {math.exp(s):.2f} "
+        + ("(it waits, then closes steeply: a slider held centred, lugs touching together)"
+           if s > 0 else "(it starts at once and closes ever more slowly: contact spreading "
+           "over lugs or a line)")))
 
 
 def refine_play_drift(problem: Problem, fit: Fit) -> Fit:

@@ -167,7 +167,7 @@ RIG_NAMES = tuple(RIG_EFFECTS)
 
 # Measurement effects that the baseline already fits in a kind, so not searched there: a
 # transmission test's output-angle gain is the baseline's slope (the ratio is exact), and
-# is reported from it (params.output_gain_entry).
+# is reported from it (rig_entries.output_gain_entry).
 IN_BASELINE = {("sensor_gain", "transmission")}
 
 

@@ -8,7 +8,7 @@ says which of the others the data cannot refuse, so a reviewer checks the rig fo
 
 A rival reads the same when, with its columns added to the named model's design, the named
 effect's own columns no longer earn their place (ΔBIC ≤ ``BIC_MIN`` or less than
-``EXPLAINED_MIN`` noise variances, :func:`.params._significant`).
+``EXPLAINED_MIN`` noise variances, :func:`.rig_entries.significant`).
 
 References
 ----------
@@ -22,7 +22,7 @@ import numpy as np
 from . import rig
 from .fitting import Fit, Problem
 from .model_columns import _inputs_on
-from .params import _significant
+from .rig_entries import significant
 from .rig import WARM_UP_TAU
 
 # The drifts a rival reading is drawn with: warm-ups over the fitted range of time constants
@@ -52,7 +52,7 @@ def rivals(problem: Problem, fit: Fit, effect: str, sigma: float, tau: float) ->
     for rival in ALIKE:
         if rival == effect or rival in fit.effects:
             continue
-        if any(not _significant(problem, np.column_stack([fit.columns, c]), own, sigma, tau)
+        if any(not significant(problem, np.column_stack([fit.columns, c]), own, sigma, tau)
                for c in _rival_columns(problem, rival)):
             out.append(rival)
     return out

@@ -193,23 +193,31 @@ def swapped_after_refining(problem: Problem, final: Fit, best: Candidate | None,
 def dropped_after_refining(problem: Problem, final: Fit, best: Candidate | None, start: Fit
                            ) -> tuple[Problem, Fit, Candidate] | None:
     """(problem, fit, candidate) of the play alone in its final form (held by friction, its
-    start free) when the loop named as its second no longer passes the gates for a second
-    beside it; else None. ``start`` is the model the gear effects were added to.
+    start free, its take-up's exponent) when the loop or the linear spring named as its
+    second no longer earns its place beside it (the gates for a second; for the spring,
+    its shape either); else None. ``start`` is the model the gear effects were added to.
 
-    While effects are named a play crosses at zero torque; one that friction holds makes a
-    loop of its own (area b·2T_h), which a loop named beside it takes."""
-    if best is None or best.effects != ("backlash", "hysteresis"):
+    While effects are named a play crosses at zero torque, taken up as a tanh: one that
+    friction holds makes a loop of its own (area b·2T_h), which a loop named beside it
+    takes; one that waits before it closes, or closes slowly, bends the curve where a series
+    spring does, which a spring named beside it takes."""
+    if best is None or not (best.effects == ("backlash", "hysteresis")  # a loop added last
+                            or set(best.effects) == {"backlash", "housing_compliance"}):
         return None
+    other = next(e for e in best.effects if e != "backlash")
+    if other == "housing_compliance" and not (math.isinf(problem.housing_knee)
+                                              and math.isinf(problem.housing_opening)):
+        return None  # a spring that stiffens or opens is not what a play's take-up bends
     trial, fit = _play_found_again(problem, final,
-                                   tuple(e for e in final.effects if e != "hysteresis"),
-                                   drop_notes=("hysteresis", "backlash:"))
-    loop = gate(trial, fit, final, *round_noise(trial, [fit, final]))
-    if loop.passes(second=True):
+                                   tuple(e for e in final.effects if e != other),
+                                   drop_notes=(other, "backlash:"))
+    beside = gate(trial, fit, final, *round_noise(trial, [fit, final]))
+    if beside.passes(second=True) or springs.by_its_shape(other, "backlash", beside):
         return None
     return _named_instead(
         trial, best, start, fit, ("backlash",),
-        f"hysteresis, named beside the play during the selection, is not kept: beside the "
-        f"play in its final form it adds ΔBIC {loop.delta_bic:.1f} and does not pass the "
+        f"{other}, named beside the play during the selection, is not kept: beside the "
+        f"play in its final form it adds ΔBIC {beside.delta_bic:.1f} and does not pass the "
         "gates for a second", series_slip=False)
 
 
@@ -315,7 +323,7 @@ def _play_found_again(problem: Problem, final: Fit, effects: tuple[str, ...],
     :func:`.refine.refine_play_drift`), starting from ``final``'s shapes; the copy's notes
     that start with ``drop_notes`` are left out first."""
     trial = replace(copy_problem(problem), play_hold=0.0, play_start=False, play_bias=0.0,
-                    play_drift=0, play_step=None)
+                    play_shape=0.0, play_drift=0, play_step=None)
     trial.notes = [n for n in trial.notes if not n.startswith(drop_notes)]
     fit = refine_play_drift(trial, refine_play(trial, fit_model(trial, effects, final.theta)))
     return trial, fit
@@ -328,6 +336,8 @@ def _named_instead(trial: Problem, best: Candidate, start: Fit, fit: Fit,
     ``note`` added and the candidate's gate over ``start`` (the model the gear effects were
     added to); ``readings`` resets the candidate's reading flags that no longer hold."""
     trial.notes.append(note)
+    if start.columns.shape[0] != fit.columns.shape[0]:  # outliers left out since: its rows
+        start = fit_model(trial, start.effects, start.theta)
     added = gate(trial, start, fit, *round_noise(trial, [start, fit]))
     return trial, fit, replace(best, effects=effects, fit=fit, gate=added, undecided=(),
                                **readings)

@@ -13,6 +13,9 @@ Schwarz, G. (1978) "Estimating the dimension of a model", Ann. Stat. 6: BIC.
 
 from __future__ import annotations
 
+import numpy as np
+from scipy.optimize import minimize_scalar
+
 from .fitting import Fit, Problem, finish
 from .gates import BIC_MIN, bic_best, bic_gain, effective_n
 from .harmonics import TE_ORDER_MAX, te_order_of
@@ -104,8 +107,11 @@ def refine_te_sidebands(problem: Problem, fit: Fit) -> Fit:
     slower than the wave generator (the output, an Oldham coupling, a bearing's cage) whose
     runout or stiffness changes the error's amplitude or phase every 1/f_m WG revolutions
     gives such sidebands; the slow Legendre form follows a modulation over the record, not
-    one that repeats within it."""
+    one that repeats within it. Vibration: the same sidebands through the joint, f_m
+    searched (:func:`_vibration_sidebands`)."""
     named = {te_order_of(e) for e in fit.effects if e.startswith("te_")}
+    if problem.kind == "vibration" and named:
+        return _vibration_sidebands(problem, fit, named)
     if problem.kind != "transmission" or not named:
         return fit
     residual = problem.base.y - fit.prediction
@@ -133,4 +139,43 @@ def refine_te_sidebands(problem: Problem, fit: Fit) -> Fit:
                 f"{1 / f_m:.3g} WG revolutions; its sidebands at {near} ± "
                 + ", ".join(f"{j * f_m:.3g}" for j in range(1, kept + 1))
                 + " cycles per WG revolution kept (BIC)")
+    return fit
+
+
+# modulation rates f_m [cycles per WG revolution] a vibration test's sidebands are searched
+# over: a member turning slower than the wave generator (a bearing's cage at about 0.4 of
+# the WG's rate relative to its outer ring, an Oldham coupling, the output) within one
+# order; the grid's step, then a bounded search about its best
+SIDEBAND_RATES = (0.03, 0.9)
+SIDEBAND_GRID_STEP = 0.02
+
+
+def _vibration_sidebands(problem: Problem, fit: Fit, named: set[int]) -> Fit:
+    """Vibration: a named error modulated periodically, its sidebands k ± f_m through the
+    joint beside it. Each sideband order crosses the resonance at a run-up speed of its own
+    (f_n/(k ± f_m)), where a steady error has none, so f_m is found by the fit: a grid over
+    ``SIDEBAND_RATES``, then a bounded search about its best; one pair kept per error when it
+    lowers the BIC by more than ``BIC_MIN`` (f_m counted as a parameter)."""
+    for order in sorted(named):
+        def trial(f_m: float) -> Fit:
+            problem.te_sidebands[order] = (float(f_m), 1)
+            shapes = len(nonlinear(problem.kind, fit.effects)) + len(problem.te_sidebands)
+            return finish(problem, fit.effects, fit.theta, shapes)
+
+        grid = np.arange(SIDEBAND_RATES[0], SIDEBAND_RATES[1] + 1e-9, SIDEBAND_GRID_STEP)
+        start = min(grid, key=lambda f: trial(f).rss)
+        found = minimize_scalar(lambda f: trial(f).rss, method="bounded", bounds=(
+            max(start - SIDEBAND_GRID_STEP, SIDEBAND_RATES[0]),
+            min(start + SIDEBAND_GRID_STEP, SIDEBAND_RATES[1])), options={"xatol": 1e-4})
+        best = trial(found.x)
+        if bic_gain(fit, best, effective_n(problem, best.residual(problem))) <= BIC_MIN:
+            del problem.te_sidebands[order]
+            continue
+        fit = best
+        problem.notes.append(
+            f"transmission error: the {order}× error's amplitude or phase varies every "
+            f"{1 / found.x:.3g} WG revolutions (a member turning slower than the wave "
+            f"generator: a bearing's cage, a coupling); its sidebands at {order} ± "
+            f"{found.x:.3g} cycles per WG revolution cross the resonance at run-up speeds of "
+            "their own, kept (BIC)")
     return fit

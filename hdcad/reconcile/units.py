@@ -1,8 +1,9 @@
 """Channels in the wrong unit: found before any fit, corrected and reported as a rig finding.
 
 A channel recorded in the wrong unit (degrees, arc-minutes or arc-seconds for radians, kN·m
-or kgf·m for N·m, an input angle in revolutions or degrees, efficiency as a fraction) scales
-the data by 57.3, 3438, 206265, 1000, 9.81, 6.28, 1/57.3 or 0.01 against the catalog: no
+or kgf·m for N·m, an input angle in revolutions or degrees, efficiency as a fraction or in
+per mille) scales the data by 57.3, 3438, 206265, 1000, 9.81, 6.28, 1/57.3, 0.01 or 10
+against the catalog: no
 physical effect does that. The catalog's stiffness is an average (seed 000 p.020) and real
 gears scatter by tens of percent, hysteresis and play add to the twist at small torque, so
 only a factor beyond ``IMPLAUSIBLE`` (5) is taken as a unit error. When the factor is one of
@@ -23,6 +24,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputError
+from .data import PER_MILLE
 
 IMPLAUSIBLE = 5.0  # data / catalog scale beyond which units, not the gear, are wrong
 DEG_PER_RAD = 180.0 / math.pi
@@ -142,6 +144,10 @@ def find_fix(kind: str, data: dict, twist_of=None, ratio: float | None = None,
         if np.max(data["efficiency_pct"]) <= 1.0:
             fixes.append(UnitFix("efficiency_pct", 100.0, "efficiency as a fraction instead "
                                  "of percent", 0.01))
+        if np.median(data["efficiency_pct"]) > 100.0:  # no efficiency in % reads so
+            fixes.append(UnitFix("efficiency_pct", 1.0 / PER_MILLE, "efficiency in per mille "
+                                 "(‰, a logger's counts of 0.1 %) instead of percent",
+                                 PER_MILLE))
         if rated_torque and np.max(np.abs(data["load_torque_Nm"])) < TINY_LOAD * rated_torque:
             fixes.append(UnitFix("load_torque_Nm", 1000.0, "load torque in kN·m instead of "
                                  "N·m", np.max(np.abs(data["load_torque_Nm"])) / rated_torque))

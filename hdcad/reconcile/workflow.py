@@ -34,8 +34,8 @@ from .data import check_revolutions, validate_data
 from .fitting import Fit, Problem, copy_problem, fit_model, make_problem, set_rows
 from .gates import BIC_MIN, bic_gain, effective_n
 from .noise import correlation_time, noise_rms
-from .params import (effect_form, effect_params, output_gain_entry, rig_entry,
-                     twist_zero_entry)
+from .params import effect_form, effect_params
+from .rig_entries import output_gain_entry, rig_entry, twist_zero_entry
 
 GATE_NOTE = search.GATE_NOTE
 # A sample further than this many noise RMS from the median of its neighbours is a gross
