@@ -42,7 +42,7 @@ from .gates import (BIC_MIN, EXPLAINED_MIN, SECOND_TRY_EXPLAINED_MIN, Candidate,
                     bic_gain, effective_n, gate, round_noise)
 from .params import linear_of
 from .readings import free_scale
-from .refine import fit_viscosity_law, refine_play, refine_play_drift
+from .refine import fit_viscosity_law, refine_play, refine_play_drift, refine_play_shape
 from .te_forms import refine_te_order
 
 
@@ -326,7 +326,7 @@ def _play_found_again(problem: Problem, final: Fit, effects: tuple[str, ...],
                     play_shape=0.0, play_drift=0, play_step=None)
     trial.notes = [n for n in trial.notes if not n.startswith(drop_notes)]
     fit = refine_play_drift(trial, refine_play(trial, fit_model(trial, effects, final.theta)))
-    return trial, fit
+    return trial, refine_play_shape(trial, fit)
 
 
 def _named_instead(trial: Problem, best: Candidate, start: Fit, fit: Fit,
