@@ -218,7 +218,8 @@ def dropped_after_refining(problem: Problem, final: Fit, best: Candidate | None,
         trial, best, start, fit, ("backlash",),
         f"{other}, named beside the play during the selection, is not kept: beside the "
         f"play in its final form it adds ΔBIC {beside.delta_bic:.1f} and does not pass the "
-        "gates for a second", series_slip=False)
+        "gates for a second" + (" nor earn it by its shape" if other == "housing_compliance"
+                                else ""), series_slip=False)
 
 
 # the most of the 1× error's amplitude its 2× overtone may carry: a 1× modulation of depth ε
