@@ -42,6 +42,12 @@ EFFICIENCY_READING_PCT = (-100.0, 200.0)
 PER_MILLE = 10.0  # an efficiency read in ‰ is 10× its value in %
 
 
+def read_in_per_mille(efficiency: np.ndarray) -> bool:
+    """Whether an efficiency column reads in per mille (a logger's counts of 0.1 %): a median
+    above 100 % is no efficiency in percent."""
+    return bool(np.median(efficiency) > 100.0)
+
+
 def check_kind(kind: str) -> str:
     if kind not in KINDS:
         raise InputError("kind", f"{kind!r} is not a reconcile kind; allowed: {', '.join(KINDS)}")
@@ -153,9 +159,8 @@ def check_revolutions(d: dict[str, np.ndarray]) -> None:
 def _check_efficiency(d: dict[str, np.ndarray]) -> None:
     eta = d["efficiency_pct"]
     low, high = EFFICIENCY_READING_PCT
-    # a median above 100 % is no efficiency in percent: a reading in per mille (a logger's
-    # counts of 0.1 %), converted with the units (units.find_fix)
-    per_mille = PER_MILLE if np.median(eta) > 100.0 else 1.0
+    # a reading in per mille is converted with the units (units.find_fix)
+    per_mille = PER_MILLE if read_in_per_mille(eta) else 1.0
     if eta.min() < low * per_mille or eta.max() > high * per_mille:
         raise InputError("efficiency_pct", f"must lie in {low:g}…{high:g} % (an efficiency, "
                                            "0…100 %, with its reading's error; or "

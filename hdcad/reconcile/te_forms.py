@@ -157,10 +157,15 @@ def _vibration_sidebands(problem: Problem, fit: Fit, named: set[int]) -> Fit:
     ``SIDEBAND_RATES``, then a bounded search about its best; one pair kept per error when it
     lowers the BIC by more than ``BIC_MIN`` (f_m counted as a parameter)."""
     for order in sorted(named):
+        tried: dict[float, Fit] = {}
+
         def trial(f_m: float) -> Fit:
+            """The fit with one sideband pair at ``f_m`` (left set on the problem)."""
             problem.te_sidebands[order] = (float(f_m), 1)
-            shapes = len(nonlinear(problem.kind, fit.effects)) + len(problem.te_sidebands)
-            return finish(problem, fit.effects, fit.theta, shapes)
+            if float(f_m) not in tried:
+                shapes = len(nonlinear(problem.kind, fit.effects)) + len(problem.te_sidebands)
+                tried[float(f_m)] = finish(problem, fit.effects, fit.theta, shapes)
+            return tried[float(f_m)]
 
         grid = np.arange(SIDEBAND_RATES[0], SIDEBAND_RATES[1] + 1e-9, SIDEBAND_GRID_STEP)
         start = min(grid, key=lambda f: trial(f).rss)

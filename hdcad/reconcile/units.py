@@ -24,7 +24,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputError
-from .data import PER_MILLE
+from .data import PER_MILLE, read_in_per_mille
 
 IMPLAUSIBLE = 5.0  # data / catalog scale beyond which units, not the gear, are wrong
 DEG_PER_RAD = 180.0 / math.pi
@@ -144,7 +144,7 @@ def find_fix(kind: str, data: dict, twist_of=None, ratio: float | None = None,
         if np.max(data["efficiency_pct"]) <= 1.0:
             fixes.append(UnitFix("efficiency_pct", 100.0, "efficiency as a fraction instead "
                                  "of percent", 0.01))
-        if np.median(data["efficiency_pct"]) > 100.0:  # no efficiency in % reads so
+        if read_in_per_mille(data["efficiency_pct"]):
             fixes.append(UnitFix("efficiency_pct", 1.0 / PER_MILLE, "efficiency in per mille "
                                  "(‰, a logger's counts of 0.1 %) instead of percent",
                                  PER_MILLE))

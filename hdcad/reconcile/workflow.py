@@ -124,10 +124,11 @@ def _outliers(residual: np.ndarray) -> np.ndarray:
     return np.flatnonzero(np.abs(local) > OUTLIER_SIGMA * sigma)
 
 
-def _set_aside(problem: Problem, fit: Fit, where: str) -> np.ndarray:
-    """The gross outliers of ``fit``'s residual not yet left out, added to
-    ``problem.outliers`` (left out of the RMSE) with a note saying they were, ``where``."""
-    bad = np.setdiff1d(_outliers(problem.base.y - fit.prediction), problem.outliers)
+def _set_aside(problem: Problem, found: np.ndarray, where: str) -> np.ndarray:
+    """The gross outliers ``found`` (:func:`_outliers` of a fit's residual) not yet left out,
+    added to ``problem.outliers`` (left out of the RMSE) with a note saying they were,
+    ``where``."""
+    bad = np.setdiff1d(found, problem.outliers)
     if bad.size:
         problem.outliers = np.union1d(problem.outliers, bad)
         problem.notes.append(f"{bad.size} gross outlier(s) (> {OUTLIER_SIGMA:g}× the noise RMS "
@@ -143,7 +144,8 @@ def _without_outliers(problem: Problem, fit: Fit) -> Fit:
     efficiency grid run in random order reads as rough as noise to the neighbours) and hides
     an outlier in them."""
     which = "the named model's fit" if fit.effects else "the fit"
-    bad = _set_aside(problem, fit, f"left out of {which} and the RMSE")
+    bad = _set_aside(problem, _outliers(problem.base.y - fit.prediction),
+                     f"left out of {which} and the RMSE")
     if not bad.size:
         return fit
     set_rows(problem, np.setdiff1d(problem.rows, bad))
@@ -161,9 +163,10 @@ def _outliers_of_final(problem: Problem, final: Fit) -> None:
     their neighbours are no gross outliers: a form not yet refined missed them (a play
     taken up more steeply than a tanh, before its exponent). They count in the RMSE again,
     as rows the final form was not fitted to."""
-    _set_aside(problem, final, "in the final model's residual left out of the RMSE (the "
+    found = _outliers(problem.base.y - final.prediction)
+    _set_aside(problem, found, "in the final model's residual left out of the RMSE (the "
                                "final form was fitted with them)")
-    back = np.setdiff1d(problem.outliers, _outliers(problem.base.y - final.prediction))
+    back = np.setdiff1d(problem.outliers, found)
     if back.size:
         problem.outliers = np.setdiff1d(problem.outliers, back)
         problem.notes.append(
