@@ -3,8 +3,9 @@
 1. Units: a channel in the wrong unit is converted and reported (:mod:`.units`).
 2. Baseline: the catalog model with its scatter as nuisance parameters (compliance scale and
    corner width of the twist curve, efficiency level, offset), fitted first
-   (:mod:`.baseline`); gross outliers (> ``OUTLIER_SIGMA`` noise RMS from their
-   neighbours' median) are left out of every fit and of the RMSE, and counted.
+   (:mod:`.baseline`); gross outliers (:mod:`.outliers`: > 6 noise RMS from their
+   neighbours' median, where the residual around them is quiet) are left out of every fit
+   and of the RMSE, and counted.
 3. Noise from the data itself (:mod:`.noise`): its RMS from lagged fourth differences of the
    residual, its correlation time τ for the effective sample size.
 4. Search (:mod:`.search`): measurement-chain effects, then every gear effect and pair,
@@ -21,29 +22,23 @@ import math
 from dataclasses import dataclass, field, replace
 
 import numpy as np
-from scipy.ndimage import median_filter
 
 from ..catalog import Catalog
 from ..models import GearModel
 from . import baseline as baselines
 from . import frames, readings, refine, rig_alike, seconds
+from .outliers import outliers_of_final, without_outliers
 from . import regions as rg
 from . import search
 from . import units
 from .data import check_revolutions, validate_data
-from .fitting import Fit, Problem, copy_problem, fit_model, make_problem, set_rows
+from .fitting import Fit, Problem, copy_problem, fit_model, make_problem
 from .gates import BIC_MIN, bic_gain, effective_n
 from .noise import correlation_time, noise_rms
 from .params import effect_form, effect_params
 from .rig_entries import output_gain_entry, rig_entry, twist_zero_entry
 
 GATE_NOTE = search.GATE_NOTE
-# A sample further than this many noise RMS from the median of its neighbours is a gross
-# outlier (a Gaussian sample does so with probability 2·10⁻⁹).
-OUTLIER_SIGMA = 6.0
-OUTLIER_WINDOW = 7
-
-
 @dataclass
 class Step:
     """One named gear effect: its parameters in the final model, the ΔBIC and CV gain of the
@@ -115,70 +110,9 @@ def _baseline(kind, data, model, catalog, load_inertia_kgm2):
     return baselines.build(kind, data, model, catalog, load_inertia_kgm2), fixes
 
 
-def _outliers(residual: np.ndarray) -> np.ndarray:
-    """Indices of gross outliers of a residual in time order."""
-    sigma = noise_rms(residual)
-    if not sigma > 0:
-        return np.zeros(0, dtype=int)
-    local = residual - median_filter(residual, OUTLIER_WINDOW, mode="nearest")
-    return np.flatnonzero(np.abs(local) > OUTLIER_SIGMA * sigma)
-
-
-def _set_aside(problem: Problem, found: np.ndarray, where: str) -> np.ndarray:
-    """The gross outliers ``found`` (:func:`_outliers` of a fit's residual) not yet left out,
-    added to ``problem.outliers`` (left out of the RMSE) with a note saying they were,
-    ``where``."""
-    bad = np.setdiff1d(found, problem.outliers)
-    if bad.size:
-        problem.outliers = np.union1d(problem.outliers, bad)
-        problem.notes.append(f"{bad.size} gross outlier(s) (> {OUTLIER_SIGMA:g}× the noise RMS "
-                             f"from their neighbours) {where}")
-    return bad
-
-
-def _without_outliers(problem: Problem, fit: Fit) -> Fit:
-    """``fit`` again without the gross outliers of its residual not yet left out.
-
-    Once on the baseline, so that outliers do not steer the search, and once on the named
-    model before its final form: before its effects are in, the residual holds them (an
-    efficiency grid run in random order reads as rough as noise to the neighbours) and hides
-    an outlier in them."""
-    which = "the named model's fit" if fit.effects else "the fit"
-    bad = _set_aside(problem, _outliers(problem.base.y - fit.prediction),
-                     f"left out of {which} and the RMSE")
-    if not bad.size:
-        return fit
-    set_rows(problem, np.setdiff1d(problem.rows, bad))
-    return fit_model(problem, fit.effects, fit.theta)
-
-
-def _outliers_of_final(problem: Problem, final: Fit) -> None:
-    """The gross outliers of the final form's residual not yet left out, left out of the
-    RMSE. What the final form follows (a rectified 2× error's overtones) hid 14 of 17 of
-    suite P's outliers from the named model's residual. The final form is not fitted again
-    without them: some of its forms are no columns to solve again (a joint on the catalog
-    curve, integrated), and a few rows among thousands barely move it.
-
-    Rows set aside earlier that the final form leaves within ``OUTLIER_SIGMA`` noise RMS of
-    their neighbours are no gross outliers: a form not yet refined missed them (a play
-    taken up more steeply than a tanh, before its exponent). They count in the RMSE again,
-    as rows the final form was not fitted to."""
-    found = _outliers(problem.base.y - final.prediction)
-    _set_aside(problem, found, "in the final model's residual left out of the RMSE (the "
-                               "final form was fitted with them)")
-    back = np.setdiff1d(problem.outliers, found)
-    if back.size:
-        problem.outliers = np.setdiff1d(problem.outliers, back)
-        problem.notes.append(
-            f"{back.size} of the rows set aside as gross outliers lie within "
-            f"{OUTLIER_SIGMA:g}× the noise RMS of their neighbours under the final model (a "
-            "form not yet refined missed them): counted in the RMSE again, though left out "
-            "of the fit")
-
-
 def _start(problem: Problem) -> Fit:
     """The baseline fit, with gross outliers found on its residual and left out."""
-    return _without_outliers(problem, fit_model(problem, ()))
+    return without_outliers(problem, fit_model(problem, ()))
 
 
 def reconcile(kind: str, data: dict, model: GearModel, catalog: Catalog,
@@ -198,8 +132,8 @@ def reconcile(kind: str, data: dict, model: GearModel, catalog: Catalog,
     near = rig_table[-1] if rig_table and chosen[0] is problem else []
     problem, with_rig, best, candidates, set_aside = chosen
     final = search.recheck_rig(problem, best.fit if best else with_rig)
-    final = refine.refine(problem, _without_outliers(problem, final))
-    _outliers_of_final(problem, final)
+    final = refine.refine(problem, without_outliers(problem, final))
+    outliers_of_final(problem, final)
     keep = np.ones(len(base.y), bool)
     keep[problem.outliers] = False
 
@@ -384,5 +318,6 @@ def _result(problem, model, start, final, resid0, residual, sigma, tau, keep, st
         outliers=int(problem.outliers.size),
         series={**{k: v for k, v in base.inputs.items() if np.ndim(v) == 1},
                 "measured": base.y,
-                "catalog": base.fixed if base.curve is None else base.free[:, 0], "baseline": start.prediction,
+                "catalog": base.fixed if base.curve is None else base.free[:, 0],
+                "baseline": start.prediction,
                 "reconciled": final.prediction})
