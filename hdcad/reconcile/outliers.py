@@ -80,8 +80,8 @@ def outliers_of_final(problem: Problem, final: Fit) -> None:
     without them: some of its forms are no columns to solve again (a joint on the catalog
     curve, integrated), and a few rows among thousands barely move it.
 
-    Rows set aside earlier that the final form leaves within ``OUTLIER_SIGMA`` noise RMS of
-    their neighbours are no gross outliers: a form not yet refined missed them (a play
+    Rows set aside earlier that :func:`find_outliers` does not find in the final form's
+    residual are no gross outliers: a form not yet refined missed them (a play
     taken up more steeply than a tanh, before its exponent). They count in the RMSE again,
     as rows the final form was not fitted to."""
     found = find_outliers(problem.base.y - final.prediction)
@@ -91,7 +91,7 @@ def outliers_of_final(problem: Problem, final: Fit) -> None:
     if back.size:
         problem.outliers = np.setdiff1d(problem.outliers, back)
         problem.notes.append(
-            f"{back.size} of the rows set aside as gross outliers lie within "
-            f"{OUTLIER_SIGMA:g}× the noise RMS of their neighbours under the final model (a "
-            "form not yet refined missed them): counted in the RMSE again, though left out "
-            "of the fit")
+            f"{back.size} of the rows set aside as gross outliers do not stand "
+            f"{OUTLIER_SIGMA:g}× the noise RMS out of their neighbours under the final model "
+            "(a form not yet refined missed them): counted in the RMSE again, though left "
+            "out of the fit")

@@ -27,7 +27,6 @@ from ..catalog import Catalog
 from ..models import GearModel
 from . import baseline as baselines
 from . import frames, readings, refine, rig_alike, seconds
-from .outliers import outliers_of_final, without_outliers
 from . import regions as rg
 from . import search
 from . import units
@@ -35,10 +34,13 @@ from .data import check_revolutions, validate_data
 from .fitting import Fit, Problem, copy_problem, fit_model, make_problem
 from .gates import BIC_MIN, bic_gain, effective_n
 from .noise import correlation_time, noise_rms
+from .outliers import outliers_of_final, without_outliers
 from .params import effect_form, effect_params
 from .rig_entries import output_gain_entry, rig_entry, twist_zero_entry
 
 GATE_NOTE = search.GATE_NOTE
+
+
 @dataclass
 class Step:
     """One named gear effect: its parameters in the final model, the ΔBIC and CV gain of the
